@@ -1,0 +1,60 @@
+"""A ball slipping with viscous friction on a uniformly rotating plane.
+
+Exact, numerically stable solution of the linear model of T. B. Ivanova,
+"The Rolling of a Homogeneous Ball with Slipping on a Horizontal Rotating
+Plane", Russian Journal of Nonlinear Dynamics 15(2), 171-178 (2019).
+
+States are z = (x, y, vx, vy, wx, wy), dimensionless (length R, time
+1/Omega, mass m).
+"""
+
+from turntable.newton_euler import NewtonEulerResult, newton_euler
+from turntable.solution import (
+    ModalTerms,
+    conserved,
+    modal_terms,
+    no_slip_state,
+    nonholonomic,
+    slip_velocity,
+    solve,
+    spiral_centre,
+)
+from turntable.spectrum import (
+    GOLDEN,
+    Expansion,
+    Peak,
+    Spectrum,
+    alpha1_peak,
+    eigenvalues,
+    large_friction_expansion,
+    log_damping_ratio,
+    log_growth_per_turn,
+    spectrum,
+    system_matrix,
+)
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "GOLDEN",
+    "Expansion",
+    "ModalTerms",
+    "NewtonEulerResult",
+    "Peak",
+    "Spectrum",
+    "alpha1_peak",
+    "conserved",
+    "eigenvalues",
+    "large_friction_expansion",
+    "log_damping_ratio",
+    "log_growth_per_turn",
+    "modal_terms",
+    "newton_euler",
+    "no_slip_state",
+    "nonholonomic",
+    "slip_velocity",
+    "solve",
+    "spectrum",
+    "spiral_centre",
+    "system_matrix",
+]

@@ -1,0 +1,72 @@
+"""Argument checks shared by the public functions.
+
+Every public entry point validates its arguments here before doing any work,
+so that bad input raises a :class:`ValueError` that names the argument and
+what it must be, instead of propagating NaN or inf.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+
+def _as_float_array(name: str, value: Any, what: str) -> NDArray[np.float64]:
+    if isinstance(value, (str, bytes)) or value is None:
+        raise ValueError(f"{name} must be {what}; got {value!r}")
+    try:
+        arr = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be {what}; got {value!r}") from None
+    if np.asarray(value).dtype == bool:
+        raise ValueError(f"{name} must be {what}; got a boolean {value!r}")
+    return arr
+
+
+def positive(name: str, value: ArrayLike) -> NDArray[np.float64]:
+    """Return ``value`` as a float array whose entries are finite and > 0."""
+    what = "a finite positive number (or an array of them)"
+    arr = _as_float_array(name, value, what)
+    if arr.size == 0:
+        raise ValueError(f"{name} must be {what}; got an empty array")
+    if not np.all(np.isfinite(arr)) or not np.all(arr > 0):
+        raise ValueError(f"{name} must be {what}; got {value!r}")
+    return arr
+
+
+def positive_scalar(name: str, value: ArrayLike) -> float:
+    """Return ``value`` as a Python float that is finite and > 0."""
+    arr = positive(name, value)
+    if arr.ndim != 0:
+        raise ValueError(
+            f"{name} must be a single finite positive number; got shape {arr.shape}"
+        )
+    return float(arr)
+
+
+def state(name: str, value: ArrayLike) -> NDArray[np.float64]:
+    """Return ``value`` as a float array of six finite numbers."""
+    what = "six finite numbers (x, y, vx, vy, wx, wy)"
+    arr = _as_float_array(name, value, what)
+    if arr.shape != (6,):
+        raise ValueError(f"{name} must be {what}; got shape {arr.shape}")
+    if not np.all(np.isfinite(arr)):
+        raise ValueError(f"{name} must be {what}; got {value!r}")
+    return arr
+
+
+def times(name: str, value: ArrayLike, *, increasing: bool = False) -> NDArray[np.float64]:
+    """Return ``value`` as a finite, non-negative 1-D float array."""
+    what = "a finite 1-D array of times >= 0"
+    if increasing:
+        what += " in increasing order"
+    arr = _as_float_array(name, value, what)
+    if arr.ndim != 1:
+        raise ValueError(f"{name} must be {what}; got shape {arr.shape}")
+    if not np.all(np.isfinite(arr)) or np.any(arr < 0):
+        raise ValueError(f"{name} must be {what}; got non-finite or negative times")
+    if increasing and np.any(np.diff(arr) <= 0):
+        raise ValueError(f"{name} must be {what}; got times that do not increase")
+    return arr

@@ -1,0 +1,293 @@
+"""Exact solution of dz/dt = L z (2.7)-(2.8) and its no-slip limit (3.3).
+
+The six real equations (1.7) are three complex ones: with r = x + i y,
+v = vx + i vy, w = wx + i wy (J acts as multiplication by i),
+
+    r' = v,   v' = mu0 (i r - v - i w),   w' = (mu0 / k)(r + i v - w).
+
+The quantity c = v - i k w is conserved (angular momentum about the contact
+point), so w = r_c - i v / k with the spiral centre r_c = i c / k, and the
+offset rho = r - r_c obeys the scalar equation
+
+    rho'' + 2 mu rho' - i mu0 rho = 0,   roots lambda_+ = alpha1 + i beta,
+                                                lambda_- = alpha2 - i beta.
+
+Its solution is written with the divided difference
+D(t) = (e^{lambda_+ t} - e^{lambda_- t}) / (lambda_+ - lambda_-), evaluated as
+-e^{lambda_+ t} expm1(-(lambda_+ - lambda_-) t) / (lambda_+ - lambda_-):
+
+    rho(t) = rho0 (E(t) - lambda_+ D(t)) + v0 D(t)
+    v(t)   = v0 (E(t) + lambda_- D(t)) + i mu0 rho0 D(t),   E = e^{lambda_+ t}.
+
+Nothing here overflows (Re lambda_- < 0 and alpha1 t stays moderate), nothing
+cancels as the roots merge (mu0 -> 0) or separate (mu0 -> infinity).
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from turntable import _validate
+from turntable.spectrum import _spectrum
+
+
+def _complex_state(z0: NDArray[np.float64]) -> tuple[complex, complex, complex]:
+    return complex(z0[0], z0[1]), complex(z0[2], z0[3]), complex(z0[4], z0[5])
+
+
+def _real_state(
+    r: NDArray[np.complex128], v: NDArray[np.complex128], w: NDArray[np.complex128]
+) -> NDArray[np.float64]:
+    r, v, w = np.broadcast_arrays(r, v, w)
+    return np.stack([r.real, r.imag, v.real, v.imag, w.real, w.imag], axis=-1)
+
+
+def conserved(z: ArrayLike, k: float) -> NDArray[np.float64]:
+    """Return the two conserved quantities (k wx - vy, k wy + vx).
+
+    Parameters
+    ----------
+    z : array_like
+        State(s) with last axis (x, y, vx, vy, wx, wy).
+    k : float
+        Inertia ratio, > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        Array of shape ``z.shape[:-1] + (2,)``.
+
+    Notes
+    -----
+    Angular momentum about the contact point, Section 2: in complex form
+    c = v - i k w is constant along every solution of (1.7).
+    """
+    k = _validate.positive_scalar("k", k)
+    z = np.asarray(z, dtype=float)
+    if z.shape[-1:] != (6,):
+        raise ValueError(f"z must have a last axis of length 6; got shape {z.shape}")
+    return np.stack([k * z[..., 4] - z[..., 3], k * z[..., 5] + z[..., 2]], axis=-1)
+
+
+def spiral_centre(z0: ArrayLike, k: float) -> NDArray[np.float64]:
+    """Return the centre (x0, y0) of the spiral traced by the ball's centre.
+
+    Parameters
+    ----------
+    z0 : array_like
+        Initial state (x, y, vx, vy, wx, wy).
+    k : float
+        Inertia ratio, > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``[x0, y0]``.
+
+    Notes
+    -----
+    Equation (2.8), from the conserved quantities::
+
+        x0 = (k wx(0) - vy(0)) / k,   y0 = (k wy(0) + vx(0)) / k
+
+    It does not depend on r(0).  The sign in y0 is +: the centre is the
+    fixed point x0 e1 + y0 e2 with the same conserved c as z0, and at a
+    fixed point v = 0, w = (x0, y0), so c = -i k (x0 + i y0).
+    """
+    z0 = _validate.state("z0", z0)
+    k = _validate.positive_scalar("k", k)
+    return np.array([(k * z0[4] - z0[3]) / k, (k * z0[5] + z0[2]) / k])
+
+
+class _Coefficients(NamedTuple):
+    rc: complex
+    rho0: complex
+    v0: complex
+    lp: complex
+    lm: complex
+    k: float
+    mu0: float
+
+
+def _coefficients(z0: ArrayLike, mu0: float, k: float) -> _Coefficients:
+    z0 = _validate.state("z0", z0)
+    mu0 = _validate.positive_scalar("mu0", mu0)
+    k = _validate.positive_scalar("k", k)
+    r0, v0, w0 = _complex_state(z0)
+    rc = w0 + 1j * v0 / k
+    s = _spectrum(np.float64(mu0), np.float64(k))
+    lp = complex(s.alpha1, s.beta)
+    lm = complex(s.alpha2, -s.beta)
+    return _Coefficients(rc, r0 - rc, v0, lp, lm, k, mu0)
+
+
+def solve(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> NDArray[np.float64]:
+    """Return the exact solution z(t) of dz/dt = L z with z(0) = z0.
+
+    Parameters
+    ----------
+    z0 : array_like
+        Initial state (x, y, vx, vy, wx, wy).
+    t : array_like
+        1-D array of times >= 0 (in units of 1/Omega), in any order.
+    mu0, k : float
+        Friction coefficient and inertia ratio, finite and > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (len(t), 6).
+
+    Notes
+    -----
+    Equation (2.7), z(t) = z0 + z+(t) + z-(t), evaluated in the
+    cancellation-free form given in the module docstring.  The error is
+    about 1e-15 relative to the size of the state for mu0 in
+    [1e-3, 1e3] (see ``benchmarks/``).
+    """
+    t = _validate.times("t", t)
+    c = _coefficients(z0, mu0, k)
+    d = c.lp - c.lm
+    e_plus = np.exp(c.lp * t)
+    div = -e_plus * np.expm1(-d * t) / d
+    rho = c.rho0 * (e_plus - c.lp * div) + c.v0 * div
+    v = c.v0 * (e_plus + c.lm * div) + 1j * c.mu0 * c.rho0 * div
+    r = c.rc + rho
+    w = c.rc - 1j * v / c.k
+    return _real_state(r, v, w)
+
+
+class ModalTerms(NamedTuple):
+    """The three parts of the solution (2.7), each of shape (len(t), 6)."""
+
+    centre: NDArray[np.float64]
+    plus: NDArray[np.float64]
+    minus: NDArray[np.float64]
+
+
+def modal_terms(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> ModalTerms:
+    """Split the solution into its fixed, growing and decaying parts.
+
+    Parameters
+    ----------
+    z0 : array_like
+        Initial state (x, y, vx, vy, wx, wy).
+    t : array_like
+        1-D array of times >= 0.
+    mu0, k : float
+        Friction coefficient and inertia ratio, finite and > 0.
+
+    Returns
+    -------
+    ModalTerms
+        ``(centre, plus, minus)``: the projection of z0 on ker L (constant),
+        the part on the modes alpha1 +- i beta and the part on the modes
+        alpha2 +- i beta.  They sum to `solve` (up to rounding relative to
+        the size of the terms, which grow like mu0^-1/2 as mu0 -> 0).
+
+    Notes
+    -----
+    Equation (2.7).  With rho0 = r(0) - r_c and v0 = v(0)::
+
+        rho(t) = A e^{lambda_+ t} + B e^{lambda_- t},
+        A = (v0 - lambda_- rho0) / (lambda_+ - lambda_-),
+        B = (lambda_+ rho0 - v0) / (lambda_+ - lambda_-),
+
+    and each mode carries v = lambda rho, w = -i lambda rho / k.
+    """
+    t = _validate.times("t", t)
+    c = _coefficients(z0, mu0, k)
+    d = c.lp - c.lm
+    amp_p = (c.v0 - c.lm * c.rho0) / d * np.exp(c.lp * t)
+    amp_m = (c.lp * c.rho0 - c.v0) / d * np.exp(c.lm * t)
+    centre = _real_state(np.full(t.shape, c.rc), np.zeros(t.shape), np.full(t.shape, c.rc))
+    plus = _real_state(amp_p, c.lp * amp_p, -1j * c.lp * amp_p / c.k)
+    minus = _real_state(amp_m, c.lm * amp_m, -1j * c.lm * amp_m / c.k)
+    return ModalTerms(centre, plus, minus)
+
+
+def no_slip_state(z0: ArrayLike, k: float) -> NDArray[np.float64]:
+    """Return the state on the no-slip constraint reached after the initial layer.
+
+    Parameters
+    ----------
+    z0 : array_like
+        Initial state (x, y, vx, vy, wx, wy), possibly with slip.
+    k : float
+        Inertia ratio, > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        The state with the same r and the same conserved quantities as z0
+        whose slip velocity u = v + gamma x w - gamma x r vanishes.
+
+    Notes
+    -----
+    Section 3: in complex form u = v + i (w - r) = 0 and c = v - i k w fix
+    v = i k (r - r_c) / (k + 1) and w = r + i v.
+    """
+    z0 = _validate.state("z0", z0)
+    k = _validate.positive_scalar("k", k)
+    r0, v0, w0 = _complex_state(z0)
+    rc = w0 + 1j * v0 / k
+    v = 1j * k / (k + 1.0) * (r0 - rc)
+    return _real_state(np.array(r0), np.array(v), np.array(r0 + 1j * v))
+
+
+def slip_velocity(z: ArrayLike) -> NDArray[np.float64]:
+    """Return the slip velocity u = v + gamma x w - gamma x r, components (ux, uy).
+
+    Parameters
+    ----------
+    z : array_like
+        State(s) with last axis (x, y, vx, vy, wx, wy).
+
+    Notes
+    -----
+    Section 1 (dimensionless): u is the velocity of the ball's contact
+    point relative to the plane; the no-slip constraint is u = 0.
+    """
+    z = np.asarray(z, dtype=float)
+    if z.shape[-1:] != (6,):
+        raise ValueError(f"z must have a last axis of length 6; got shape {z.shape}")
+    return np.stack([z[..., 2] - z[..., 5] + z[..., 1], z[..., 3] + z[..., 4] - z[..., 0]], axis=-1)
+
+
+def nonholonomic(z0: ArrayLike, t: ArrayLike, k: float) -> NDArray[np.float64]:
+    """Return the no-slip (mu0 -> infinity) motion started from z0.
+
+    Parameters
+    ----------
+    z0 : array_like
+        Initial state (x, y, vx, vy, wx, wy).  If it violates the no-slip
+        constraint, the motion starts from `no_slip_state` (z0): the state
+        after the initial layer, with the same r(0) and conserved quantities.
+    t : array_like
+        1-D array of times >= 0.
+    k : float
+        Inertia ratio, > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (len(t), 6).
+
+    Notes
+    -----
+    Equation (3.3): the centre circles about (x0, y0) of (2.8) at the
+    constant rate k / (k + 1) with constant radius::
+
+        r(t) = r_c + (r(0) - r_c) e^{i k t / (k + 1)},
+        v = i k (r - r_c) / (k + 1),   w = r_c + (r - r_c) / (k + 1).
+    """
+    t = _validate.times("t", t)
+    z0 = no_slip_state(z0, k)
+    r0, _, _ = _complex_state(z0)
+    rc = complex(*spiral_centre(z0, k))
+    omega = k / (k + 1.0)
+    rho = (r0 - rc) * np.exp(1j * omega * t)
+    return _real_state(rc + rho, 1j * omega * rho, rc + rho / (k + 1.0))

@@ -1,0 +1,286 @@
+"""The linear system (1.7) and its spectrum (2.1)-(2.6), (2.9)-(2.10), (3.2).
+
+All quantities are dimensionless: length R, time 1/Omega, mass m, so that
+``mu0`` stands for mu0 / (m Omega) and ``k`` for I / (m R^2).
+
+The closed forms are rewritten so that no step subtracts nearly equal
+numbers.  With ``h = sqrt(1 + eps^2)``, ``a = sqrt((h + 1) / 2)`` and the
+identity ``mu * eps = 2 k / (k + 1)``,
+
+    alpha1 = k eps / ((k + 1) (h + 1) (a + 1))
+    alpha2 = -mu (a + 1)
+    beta   = 2 k / ((k + 1) sqrt(2 (h + 1)))
+
+each of which is a product or quotient of positive numbers, so each is
+accurate to a few units in the last place for every mu0 > 0 and k > 0.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from turntable import _validate
+
+#: The golden ratio; alpha1 peaks where a = (1 + sqrt 5) / 2 (see `alpha1_peak`).
+GOLDEN = (1.0 + np.sqrt(5.0)) / 2.0
+
+_I2 = np.eye(2)
+_J = np.array([[0.0, -1.0], [1.0, 0.0]])
+
+
+def system_matrix(mu0: float, k: float) -> NDArray[np.float64]:
+    """Return the 6x6 matrix L of the linear system dz/dt = L z.
+
+    Parameters
+    ----------
+    mu0 : float
+        Dimensionless viscous friction coefficient, mu0 / (m Omega) > 0.
+    k : float
+        Inertia ratio I / (m R^2) > 0 (2/5 for a homogeneous ball).
+
+    Returns
+    -------
+    numpy.ndarray
+        The matrix L, shape (6, 6), acting on z = (x, y, vx, vy, wx, wy).
+
+    Notes
+    -----
+    Equation (1.7) of the paper::
+
+        L = [[ 0,         I,         0        ],
+             [ mu0 J,    -mu0 I,    -mu0 J    ],
+             [ mu0/k I,   mu0/k J,  -mu0/k I  ]]
+
+    with I the 2x2 identity and J = [[0, -1], [1, 0]].
+    """
+    mu0 = _validate.positive_scalar("mu0", mu0)
+    k = _validate.positive_scalar("k", k)
+    z = np.zeros((2, 2))
+    return np.block(
+        [
+            [z, _I2, z],
+            [mu0 * _J, -mu0 * _I2, -mu0 * _J],
+            [(mu0 / k) * _I2, (mu0 / k) * _J, -(mu0 / k) * _I2],
+        ]
+    )
+
+
+class Spectrum(NamedTuple):
+    """Real and imaginary parts of the nonzero eigenvalues of L.
+
+    Attributes
+    ----------
+    alpha1 : numpy.ndarray
+        Growth rate of the modes lambda_{1,2} = alpha1 +- i beta (> 0).
+    alpha2 : numpy.ndarray
+        Decay rate of the modes lambda_{3,4} = alpha2 +- i beta (< 0).
+    beta : numpy.ndarray
+        Common angular frequency of all four modes.
+    mu : numpy.ndarray
+        mu = mu0 (k + 1) / (2 k) of (2.2).
+    eps : numpy.ndarray
+        eps = 4 k^2 / (mu0 (k + 1)^2) of (2.2).
+    a : numpy.ndarray
+        a = sqrt((sqrt(1 + eps^2) + 1) / 2) of (2.5).
+    b : numpy.ndarray
+        b = sqrt((sqrt(1 + eps^2) - 1) / 2) of (2.5).
+    """
+
+    alpha1: NDArray[np.float64]
+    alpha2: NDArray[np.float64]
+    beta: NDArray[np.float64]
+    mu: NDArray[np.float64]
+    eps: NDArray[np.float64]
+    a: NDArray[np.float64]
+    b: NDArray[np.float64]
+
+
+def _spectrum(mu0: NDArray[np.float64], k: NDArray[np.float64]) -> Spectrum:
+    """`spectrum` on arguments that are already validated."""
+    kk = k / (k + 1.0)
+    mu = mu0 / (2.0 * kk)
+    eps = 4.0 * kk * kk / mu0
+    h = np.hypot(1.0, eps)
+    a = np.sqrt((h + 1.0) / 2.0)
+    b = eps / np.sqrt(2.0 * (h + 1.0))
+    alpha1 = kk * eps / ((h + 1.0) * (a + 1.0))
+    alpha2 = -mu * (a + 1.0)
+    beta = 2.0 * kk / np.sqrt(2.0 * (h + 1.0))
+    return Spectrum(alpha1, alpha2, beta, mu, eps, a, b)
+
+
+def spectrum(mu0: ArrayLike, k: ArrayLike) -> Spectrum:
+    """Return alpha1, alpha2, beta and the auxiliary mu, eps, a, b.
+
+    Parameters
+    ----------
+    mu0, k : float or array_like
+        Friction coefficient and inertia ratio, finite and > 0; broadcast
+        against each other.
+
+    Returns
+    -------
+    Spectrum
+        Named tuple of arrays of the broadcast shape.
+
+    Notes
+    -----
+    Equations (2.2) and (2.5)::
+
+        mu = mu0 (k + 1) / (2 k),   eps = 4 k^2 / (mu0 (k + 1)^2)
+        alpha1 = mu (a - 1),  alpha2 = -mu (a + 1),  beta = mu b
+
+    evaluated in the cancellation-free form given in the module docstring.
+    """
+    mu0 = _validate.positive("mu0", mu0)
+    k = _validate.positive("k", k)
+    mu0, k = np.broadcast_arrays(mu0, k)
+    return _spectrum(mu0, k)
+
+
+def eigenvalues(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.complex128]:
+    """Return the four nonzero eigenvalues of L.
+
+    Parameters
+    ----------
+    mu0, k : float or array_like
+        Friction coefficient and inertia ratio, finite and > 0; broadcast
+        against each other.
+
+    Returns
+    -------
+    numpy.ndarray
+        Complex array of shape ``broadcast(mu0, k).shape + (4,)`` whose last
+        axis is (alpha1 + i beta, alpha1 - i beta, alpha2 + i beta,
+        alpha2 - i beta).
+
+    Notes
+    -----
+    Equation (2.4): lambda_{1,2} = mu (-1 + sqrt(1 +- i eps)) and
+    lambda_{3,4} = mu (-1 - sqrt(1 +- i eps)); each real and imaginary part
+    has a relative error of a few units in the last place for all
+    mu0, k > 0 (see ``benchmarks/``).
+    """
+    s = spectrum(mu0, k)
+    out = np.empty(s.alpha1.shape + (4,), dtype=complex)
+    out[..., 0] = s.alpha1 + 1j * s.beta
+    out[..., 1] = s.alpha1 - 1j * s.beta
+    out[..., 2] = s.alpha2 + 1j * s.beta
+    out[..., 3] = s.alpha2 - 1j * s.beta
+    return out
+
+
+def log_damping_ratio(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
+    """Return ln N, the logarithm of the decay of z- over one period.
+
+    Parameters
+    ----------
+    mu0, k : float or array_like
+        Friction coefficient and inertia ratio, finite and > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        ln N = 2 pi |alpha2| / beta, of the broadcast shape.
+
+    Notes
+    -----
+    Equations (2.9)-(2.10): over one period T = 2 pi / beta the decaying
+    term falls by N = exp(|alpha2| T).  Since |alpha2| / beta = (a + 1) / b
+    = sqrt((a + 1) / (a - 1)) > 1, ln N > 2 pi for all mu0 and k, tending
+    to 2 pi as mu0 -> 0.  N itself overflows a double near mu0 = 5, so only
+    its logarithm is returned.
+    """
+    s = spectrum(mu0, k)
+    return 2.0 * np.pi * (s.a + 1.0) / s.b
+
+
+def log_growth_per_turn(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
+    """Return 2 pi alpha1 / beta, the log growth of the spiral per turn.
+
+    Notes
+    -----
+    alpha1 / beta = (a - 1) / b = sqrt((a - 1) / (a + 1)) = beta / |alpha2|,
+    which decreases monotonically from 1 (mu0 -> 0) to 0 (mu0 -> infinity).
+    """
+    s = spectrum(mu0, k)
+    return 2.0 * np.pi * s.b / (s.a + 1.0)
+
+
+class Peak(NamedTuple):
+    """Location and height of the maximum of alpha1 over mu0."""
+
+    mu0: NDArray[np.float64]
+    alpha1: NDArray[np.float64]
+    eps: float
+
+
+def alpha1_peak(k: ArrayLike) -> Peak:
+    """Return the friction mu0 at which alpha1 is largest, and alpha1 there.
+
+    Parameters
+    ----------
+    k : float or array_like
+        Inertia ratio, finite and > 0.
+
+    Returns
+    -------
+    Peak
+        ``mu0 = 2 k^2 / ((k + 1)^2 phi^(3/2))`` and
+        ``alpha1 = k / (k + 1) phi^(-5/2)``, with phi the golden ratio, and
+        the universal ``eps = 2 phi^(3/2)`` at the peak.
+
+    Notes
+    -----
+    In terms of a of (2.5), alpha1 = (k / (k + 1)) sqrt((a - 1)/(a + 1)) / a,
+    whose logarithmic derivative vanishes where a^2 - a - 1 = 0, i.e.
+    a = phi.  For k = 2/5 the peak is at mu0 = 0.0793.
+    """
+    k = _validate.positive("k", k)
+    kk = k / (k + 1.0)
+    eps_star = 2.0 * GOLDEN**1.5
+    return Peak(4.0 * kk * kk / eps_star, kk * GOLDEN**-2.5, float(eps_star))
+
+
+class Expansion(NamedTuple):
+    """Large-mu0 expansion (3.2) of alpha1, alpha2 and beta, to O(1/mu0)."""
+
+    alpha1: NDArray[np.float64]
+    alpha2: NDArray[np.float64]
+    beta: NDArray[np.float64]
+
+
+def large_friction_expansion(mu0: ArrayLike, k: ArrayLike) -> Expansion:
+    """Return the leading terms of (3.2) for the real and imaginary parts.
+
+    Parameters
+    ----------
+    mu0, k : float or array_like
+        Friction coefficient and inertia ratio, finite and > 0.
+
+    Returns
+    -------
+    Expansion
+        ``alpha1 = k^3 / (mu0 (k+1)^3)``,
+        ``alpha2 = -mu0 (k+1) / k - k^3 / (mu0 (k+1)^3)``,
+        ``beta = k / (k+1)``.
+
+    Notes
+    -----
+    Equation (3.2)::
+
+        lambda_{1,2} = +- i k/(k+1) + k^3 / (mu0 (k+1)^3) + O(mu0^-2)
+        lambda_{3,4} = -mu0 (k+1)/k -+ i k/(k+1) - k^3 / (mu0 (k+1)^3) + O(mu0^-2)
+
+    The remainders are O(mu0^-2) for beta (-2 k^5 / (mu0^2 (k+1)^5)) and
+    O(mu0^-3) for alpha1 and alpha2.
+    """
+    mu0 = _validate.positive("mu0", mu0)
+    k = _validate.positive("k", k)
+    mu0, k = np.broadcast_arrays(mu0, k)
+    kk = k / (k + 1.0)
+    corr = kk**3 / mu0
+    return Expansion(corr, -mu0 / kk - corr, kk + 0.0 * mu0)

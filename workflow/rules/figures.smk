@@ -1,0 +1,122 @@
+# One rule per figure. Each passes its parameters as `params:` so that editing a value in
+# config/config.yaml reruns only the figures that read it.
+
+FIGURE_NAMES = [
+    "fig1_schematic",
+    "fig2_spectrum",
+    "fig3_modal_terms",
+    "fig4_trajectories",
+    "fig5_damping_ratio",
+    "fig6_limit",
+]
+FIGURES = expand("figures/{name}.{ext}", name=FIGURE_NAMES, ext=["pdf", "png"])
+
+
+rule fig1_schematic:
+    input:
+        STYLE_FILES,
+    output:
+        pdf="figures/fig1_schematic.pdf",
+        png="figures/fig1_schematic.png",
+    params:
+        dpi=config["style"]["dpi"],
+        tilt=config["fig1_schematic"]["tilt"],
+    log:
+        "logs/fig1_schematic.log",
+    script:
+        "../../scripts/fig1_schematic.py"
+
+
+rule fig2_spectrum:
+    input:
+        STYLE_FILES,
+    output:
+        pdf="figures/fig2_spectrum.pdf",
+        png="figures/fig2_spectrum.png",
+    params:
+        dpi=config["style"]["dpi"],
+        k=config["fig2_spectrum"]["k"],
+        mu0_range=config["fig2_spectrum"]["mu0_range"],
+        n_points=config["fig2_spectrum"]["n_points"],
+    log:
+        "logs/fig2_spectrum.log",
+    script:
+        "../../scripts/fig2_spectrum.py"
+
+
+rule fig3_modal_terms:
+    input:
+        STYLE_FILES,
+    output:
+        pdf="figures/fig3_modal_terms.pdf",
+        png="figures/fig3_modal_terms.png",
+    params:
+        dpi=config["style"]["dpi"],
+        k=config["fig3_modal_terms"]["k"],
+        mu0=config["fig3_modal_terms"]["mu0"],
+        state=config["fig3_modal_terms"]["state"],
+        t_span=config["fig3_modal_terms"]["t_span"],
+        n_points=config["fig3_modal_terms"]["n_points"],
+    log:
+        "logs/fig3_modal_terms.log",
+    script:
+        "../../scripts/fig3_modal_terms.py"
+
+
+rule fig4_trajectories:
+    input:
+        STYLE_FILES,
+    output:
+        pdf="figures/fig4_trajectories.pdf",
+        png="figures/fig4_trajectories.png",
+    params:
+        dpi=config["style"]["dpi"],
+        k=config["fig4_trajectories"]["k"],
+        state=config["fig4_trajectories"]["state"],
+        mu0=config["fig4_trajectories"]["mu0"],
+        t_span=config["fig4_trajectories"]["t_span"],
+        n_points=config["fig4_trajectories"]["n_points"],
+    log:
+        "logs/fig4_trajectories.log",
+    script:
+        "../../scripts/fig4_trajectories.py"
+
+
+rule fig5_damping_ratio:
+    input:
+        STYLE_FILES,
+    output:
+        pdf="figures/fig5_damping_ratio.pdf",
+        png="figures/fig5_damping_ratio.png",
+    params:
+        dpi=config["style"]["dpi"],
+        k=config["fig5_damping_ratio"]["k"],
+        mu0_range=config["fig5_damping_ratio"]["mu0_range"],
+        n_points=config["fig5_damping_ratio"]["n_points"],
+    log:
+        "logs/fig5_damping_ratio.log",
+    script:
+        "../../scripts/fig5_damping_ratio.py"
+
+
+rule fig6_limit:
+    input:
+        STYLE_FILES,
+    output:
+        pdf="figures/fig6_limit.pdf",
+        png="figures/fig6_limit.png",
+    params:
+        dpi=config["style"]["dpi"],
+        k=config["fig6_limit"]["k"],
+        state=config["fig6_limit"]["state"],
+        mu0_trajectories=config["fig6_limit"]["mu0_trajectories"],
+        mu0_error_range=config["fig6_limit"]["mu0_error_range"],
+        n_error=config["fig6_limit"]["n_error"],
+        n_points=config["fig6_limit"]["n_points"],
+        layer_state=config["fig6_limit"]["layer_state"],
+        mu0_layer=config["fig6_limit"]["mu0_layer"],
+        layer_t_span=config["fig6_limit"]["layer_t_span"],
+    log:
+        "logs/fig6_limit.log",
+    script:
+        "../../scripts/fig6_limit.py"

@@ -1,0 +1,52 @@
+"""Smoke test of ``benchmarks/run.py``: its eigenvalue section runs and meets its target."""
+
+from __future__ import annotations
+
+import importlib.util
+import json
+import math
+from pathlib import Path
+from types import ModuleType
+
+import pytest
+
+RUN = Path(__file__).resolve().parents[1] / "benchmarks" / "run.py"
+
+
+@pytest.fixture(scope="module")
+def bench() -> ModuleType:
+    """The benchmark script, imported as a module (its main() is not run)."""
+    spec = importlib.util.spec_from_file_location("benchmarks_run", RUN)
+    assert spec is not None
+    assert spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_eigenvalue_section_on_a_small_grid(bench: ModuleType) -> None:
+    res = bench.bench_eigenvalues([1e-6, 1.0, 1e9], [0.4, 1.0])
+    worst = res["methods"]["turntable.eigenvalues"]["worst"]
+    for q in ("alpha1", "alpha2", "beta"):
+        assert isinstance(worst[q], float)
+        assert math.isfinite(worst[q])
+        assert worst[q] <= bench.EIGENVALUE_TARGET
+    assert res["pass"] is True
+    # The reference agrees with itself at more digits and with mpmath.eig of L.
+    ref = res["reference"]
+    assert ref["max_relative_change_with_40_more_digits"] < 1e-40
+    assert ref["max_relative_difference_to_mpmath_eig_of_L_at_decades"] < 1e-40
+    # The measurement can see a wrong answer: the plain double-precision form
+    # loses every digit of alpha1 at mu0 = 1e9 (eps^2 / 8 is below one ulp of 1).
+    assert res["methods"]["textbook complex128"]["by_decade"]["1e9"]["alpha1"] > 0.1
+
+
+def test_results_are_merged_into_the_shared_file(bench: ModuleType, tmp_path: Path) -> None:
+    out = tmp_path / "benchmarks.json"
+    out.write_text(json.dumps({"other": {"x": 1}, "eigenvalues": "stale"}))
+    bench.write_results(out, {"eigenvalues": {"pass": True}, "meta": bench.meta()})
+    data = json.loads(out.read_text())
+    assert data["other"] == {"x": 1}
+    assert data["eigenvalues"] == {"pass": True}
+    assert set(data["meta"]) >= {"python", "numpy", "scipy"}
+    assert [p.name for p in tmp_path.iterdir()] == ["benchmarks.json"]

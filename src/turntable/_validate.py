@@ -40,9 +40,7 @@ def positive_scalar(name: str, value: ArrayLike) -> float:
     """Return ``value`` as a Python float that is finite and > 0."""
     arr = positive(name, value)
     if arr.ndim != 0:
-        raise ValueError(
-            f"{name} must be a single finite positive number; got shape {arr.shape}"
-        )
+        raise ValueError(f"{name} must be a single finite positive number; got shape {arr.shape}")
     return float(arr)
 
 
@@ -54,6 +52,17 @@ def state(name: str, value: ArrayLike) -> NDArray[np.float64]:
         raise ValueError(f"{name} must be {what}; got shape {arr.shape}")
     if not np.all(np.isfinite(arr)):
         raise ValueError(f"{name} must be {what}; got {value!r}")
+    return arr
+
+
+def states(name: str, value: ArrayLike) -> NDArray[np.float64]:
+    """Return ``value`` as a float array of finite states, last axis of length 6."""
+    what = "finite states with a last axis (x, y, vx, vy, wx, wy) of length 6"
+    arr = _as_float_array(name, value, what)
+    if arr.shape[-1:] != (6,):
+        raise ValueError(f"{name} must be {what}; got shape {arr.shape}")
+    if not np.all(np.isfinite(arr)):
+        raise ValueError(f"{name} must be {what}; got non-finite values")
     return arr
 
 

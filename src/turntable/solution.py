@@ -66,9 +66,7 @@ def conserved(z: ArrayLike, k: float) -> NDArray[np.float64]:
     c = v - i k w is constant along every solution of (1.7).
     """
     k = _validate.positive_scalar("k", k)
-    z = np.asarray(z, dtype=float)
-    if z.shape[-1:] != (6,):
-        raise ValueError(f"z must have a last axis of length 6; got shape {z.shape}")
+    z = _validate.states("z", z)
     return np.stack([k * z[..., 4] - z[..., 3], k * z[..., 5] + z[..., 2]], axis=-1)
 
 
@@ -151,13 +149,27 @@ def solve(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> NDArray[np.float
     t = _validate.times("t", t)
     c = _coefficients(z0, mu0, k)
     d = c.lp - c.lm
-    e_plus = np.exp(c.lp * t)
-    div = -e_plus * np.expm1(-d * t) / d
-    rho = c.rho0 * (e_plus - c.lp * div) + c.v0 * div
-    v = c.v0 * (e_plus + c.lm * div) + 1j * c.mu0 * c.rho0 * div
-    r = c.rc + rho
-    w = c.rc - 1j * v / c.k
-    return _real_state(r, v, w)
+    # rho = P E + Q D and v = R E + S D with E = e^{lambda_+ t} and
+    # D = -E X / d, X = expm1(-d t); X is assembled from real functions of
+    # beta t and (alpha1 - alpha2) t (the decaying mode may underflow to 0).
+    p, q = c.rho0, -(c.v0 - c.lp * c.rho0) / d
+    r_, s_ = c.v0, -(c.lm * c.v0 + 1j * c.mu0 * c.rho0) / d
+    with np.errstate(under="ignore"):
+        cos, sin = np.cos(c.lp.imag * t), np.sin(c.lp.imag * t)
+        em1 = np.expm1(d.real * -t)
+        x = em1 * (cos * cos - sin * sin) - 2.0 * sin * sin - 2j * ((em1 + 1.0) * sin * cos)
+        e_plus = np.exp(c.lp.real * t) * (cos + 1j * sin)
+        rho = e_plus * (p + q * x)
+        v = e_plus * (r_ + s_ * x)
+    out = np.empty((t.size, 6))
+    out[:, 0] = c.rc.real + rho.real
+    out[:, 1] = c.rc.imag + rho.imag
+    out[:, 2] = v.real
+    out[:, 3] = v.imag
+    # w = r_c - i v / k
+    out[:, 4] = c.rc.real + v.imag / c.k
+    out[:, 5] = c.rc.imag - v.real / c.k
+    return out
 
 
 class ModalTerms(NamedTuple):
@@ -201,8 +213,9 @@ def modal_terms(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> ModalTerms
     t = _validate.times("t", t)
     c = _coefficients(z0, mu0, k)
     d = c.lp - c.lm
-    amp_p = (c.v0 - c.lm * c.rho0) / d * np.exp(c.lp * t)
-    amp_m = (c.lp * c.rho0 - c.v0) / d * np.exp(c.lm * t)
+    with np.errstate(under="ignore"):
+        amp_p = (c.v0 - c.lm * c.rho0) / d * np.exp(c.lp * t)
+        amp_m = (c.lp * c.rho0 - c.v0) / d * np.exp(c.lm * t)
     centre = _real_state(np.full(t.shape, c.rc), np.zeros(t.shape), np.full(t.shape, c.rc))
     plus = _real_state(amp_p, c.lp * amp_p, -1j * c.lp * amp_p / c.k)
     minus = _real_state(amp_m, c.lm * amp_m, -1j * c.lm * amp_m / c.k)
@@ -251,9 +264,7 @@ def slip_velocity(z: ArrayLike) -> NDArray[np.float64]:
     Section 1 (dimensionless): u is the velocity of the ball's contact
     point relative to the plane; the no-slip constraint is u = 0.
     """
-    z = np.asarray(z, dtype=float)
-    if z.shape[-1:] != (6,):
-        raise ValueError(f"z must have a last axis of length 6; got shape {z.shape}")
+    z = _validate.states("z", z)
     return np.stack([z[..., 2] - z[..., 5] + z[..., 1], z[..., 3] + z[..., 4] - z[..., 0]], axis=-1)
 
 

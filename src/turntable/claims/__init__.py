@@ -1,0 +1,155 @@
+"""The registry of the paper's claims and the checks that decide them.
+
+Every claim of the paper (and a few the reproduction adds) is registered
+once, with where it is in the paper, what the paper states, how it is
+checked, and a check function that computes reproduced values with
+`turntable`, compares them with independent references (high-precision
+eigenvalues, the matrix exponential, symbolic algebra, the full
+three-dimensional equations) and decides a verdict from the numbers:
+
+``confirmed``
+    the claim holds as stated;
+``refined``
+    it holds in a narrower or more precise form, stated in ``evidence``;
+``failed``
+    the numbers contradict it.
+
+The same registry drives ``results/claims.json``, ``results/claims.md`` and
+``tests/test_claims.py``.
+
+Examples
+--------
+>>> from turntable import claims
+>>> result = claims.evaluate("spectrum.kernel")
+>>> result["verdict"]
+'confirmed'
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+from turntable.claims import _checks_limit, _checks_solution, _checks_spectrum  # noqa: F401
+from turntable.claims._core import (
+    DEFAULT_PARAMS,
+    VERDICTS,
+    Claim,
+    Outcome,
+    Verdict,
+    Where,
+    clean,
+    registered,
+    resolve_params,
+)
+
+#: Claim identifiers in the order of the paper.
+ORDER: tuple[str, ...] = (
+    "model.reduction",
+    "model.rubber_ball",
+    "spectrum.char_poly",
+    "spectrum.kernel",
+    "spectrum.roots",
+    "spectrum.unstable_focus",
+    "spectrum.alpha1_peak",
+    "spectrum.growth_decay_identity",
+    "solution.decomposition",
+    "solution.centre",
+    "solution.damping_ratio",
+    "solution.fast_transient",
+    "trajectory.spiral",
+    "trajectory.untwisting_slows",
+    "limit.expansion",
+    "limit.frequency",
+    "limit.convergence",
+)
+
+_BY_ID: dict[str, Claim] = {c.id: c for c in registered()}
+if set(_BY_ID) != set(ORDER):  # pragma: no cover - guards edits to the registry
+    raise RuntimeError(f"registry and ORDER differ: {sorted(set(_BY_ID) ^ set(ORDER))}")
+
+
+def claim_ids() -> list[str]:
+    """Return every claim id, in the order of the paper."""
+    return list(ORDER)
+
+
+def get(claim_id: str) -> Claim:
+    """Return the registered `Claim` with identifier ``claim_id``.
+
+    Raises
+    ------
+    ValueError
+        If no claim has that identifier.
+    """
+    try:
+        return _BY_ID[claim_id]
+    except KeyError:
+        raise ValueError(f"claim_id must be one of {list(ORDER)}; got {claim_id!r}") from None
+
+
+def evaluate(claim_id: str, params: Mapping[str, Any] | None = None) -> dict[str, Any]:
+    """Run the check of one claim and return its record.
+
+    Parameters
+    ----------
+    claim_id : str
+        A registered identifier (see `claim_ids`).
+    params : mapping, optional
+        Check parameters over `DEFAULT_PARAMS` (see `resolve_params`).
+
+    Returns
+    -------
+    dict
+        ``id, source, where (section, equations, figure, label), claim,
+        paper_value, method, reproduced, tolerance, summary, evidence,
+        verdict``, with plain Python values and floats rounded to 12
+        significant digits.
+    """
+    claim = get(claim_id)
+    p = resolve_params(params)
+    outcome = claim.check(p)
+    if outcome.verdict not in VERDICTS:
+        raise RuntimeError(f"check of {claim_id} returned verdict {outcome.verdict!r}")
+    return clean(
+        {
+            "id": claim.id,
+            "source": claim.source,
+            "where": {
+                "section": claim.where.section,
+                "equations": claim.where.equations,
+                "figure": claim.where.figure,
+                "label": claim.where.label(),
+            },
+            "claim": claim.claim,
+            "paper_value": claim.paper_value,
+            "method": claim.method,
+            "reproduced": outcome.reproduced,
+            "tolerance": outcome.tolerance,
+            "summary": outcome.summary,
+            "evidence": outcome.evidence,
+            "verdict": outcome.verdict,
+        }
+    )
+
+
+def evaluate_all(params: Mapping[str, Any] | None = None) -> list[dict[str, Any]]:
+    """Run every check, in the order of the paper; see `evaluate`."""
+    p = resolve_params(params)
+    return [evaluate(claim_id, p) for claim_id in ORDER]
+
+
+__all__ = [
+    "DEFAULT_PARAMS",
+    "ORDER",
+    "VERDICTS",
+    "Claim",
+    "Outcome",
+    "Verdict",
+    "Where",
+    "claim_ids",
+    "evaluate",
+    "evaluate_all",
+    "get",
+    "resolve_params",
+]

@@ -1,0 +1,241 @@
+"""Checks of Section 3: the limit of infinite friction, (3.1)-(3.3)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import mpmath
+import numpy as np
+
+import turntable as tt
+from turntable.claims import _reference as ref
+from turntable.claims._core import Outcome, Where, register, sig
+
+
+@register(
+    "limit.expansion",
+    where=Where("Sec. 3", "(3.1)-(3.2)"),
+    claim=(
+        "For large mu0 the roots are +-i k/(k+1) + k^3/(mu0 (k+1)^3) and "
+        "-mu0 (k+1)/k -+ i k/(k+1) - k^3/(mu0 (k+1)^3), up to O(mu0^-2)."
+    ),
+    paper_value={"text": "remainder O(mu0^-2)", "order": -2.0},
+    method=(
+        "Compare the expansion with the 40-digit eigenvalues of L at the large mu0 values for "
+        "every k, and fit the order of the remainder of alpha1, alpha2 and beta in mu0."
+    ),
+)
+def _expansion(p: dict[str, Any]) -> Outcome:
+    mu0s = sorted(p["mu0_limit"])
+    orders: dict[str, list[float]] = {"alpha1": [], "alpha2": [], "beta": []}
+    beta_coeff_err, pkg_err = 0.0, 0.0
+    for k in p["k_values"]:
+        err: dict[str, list[float]] = {"alpha1": [], "alpha2": [], "beta": []}
+        for mu0 in mu0s:
+            e = ref.mp_spectrum(mu0, k)
+            with mpmath.workdps(ref.DPS):
+                kk = mpmath.mpf(k) / (mpmath.mpf(k) + 1)
+                corr = kk**3 / mu0
+                printed = {"alpha1": corr, "alpha2": -mu0 / kk - corr, "beta": kk}
+                exact = {
+                    "alpha1": e.roots[0].real,
+                    "alpha2": e.roots[2].real,
+                    "beta": e.roots[0].imag,
+                }
+                for name in err:
+                    err[name].append(float(abs(printed[name] - exact[name])))
+            x = tt.large_friction_expansion(mu0, k)._asdict()
+            pkg_err = max(pkg_err, *(abs(float(x[n]) / float(printed[n]) - 1) for n in printed))
+        for name, values in err.items():
+            orders[name].append(ref.log_log_slope(mu0s, values))
+        beta_coeff = err["beta"][-1] * mu0s[-1] ** 2
+        beta_coeff_err = max(beta_coeff_err, abs(beta_coeff / (2 * (k / (k + 1)) ** 5) - 1))
+    worst = {name: max(v) for name, v in orders.items()}
+    tol = {"order_at_most": -2.0 + 0.05, "beta_coefficient_rel": 1e-2, "package_rel": 1e-14}
+    ok = (
+        max(worst.values()) <= tol["order_at_most"]
+        and beta_coeff_err <= tol["beta_coefficient_rel"]
+        and pkg_err <= tol["package_rel"]
+    )
+    return Outcome(
+        verdict="confirmed" if ok else "failed",
+        reproduced={
+            "mu0_limit": mu0s,
+            "remainder_order_alpha1": worst["alpha1"],
+            "remainder_order_alpha2": worst["alpha2"],
+            "remainder_order_beta": worst["beta"],
+            "beta_remainder_coefficient_error_rel": beta_coeff_err,
+            "max_package_error_rel": pkg_err,
+            "k_values": p["k_values"],
+        },
+        tolerance=tol,
+        summary=(
+            f"remainder ~ mu0^{sig(worst['alpha1'], 3)} (alpha1), "
+            f"mu0^{sig(worst['alpha2'], 3)} (alpha2), mu0^{sig(worst['beta'], 3)} (beta)"
+        ),
+        evidence=(
+            "The expansion holds with remainder O(mu0^-2) for every k; the real parts are "
+            "even accurate to O(mu0^-3), and the imaginary part's remainder is "
+            "-2 k^5/(mu0^2 (k+1)^5)."
+            if ok
+            else "The expansion does not approach the eigenvalues at the stated order."
+        ),
+    )
+
+
+@register(
+    "limit.frequency",
+    where=Where("Sec. 3", "(3.2)-(3.3)"),
+    claim=(
+        "As mu0 -> infinity the growth rate alpha1 tends to 0 and the frequency beta to "
+        "k/(k+1), the rate of rolling without slipping (2/7 of the plane's rate for k = 2/5)."
+    ),
+    paper_value={"text": "frequency k/(k+1); 2/7 for k = 2/5", "frequency_k_2_5": 2.0 / 7.0},
+    method=(
+        "Derive the no-slip rate independently from the constrained Newton-Euler equations "
+        "(solve for the contact force, eigenvalues of the resulting 2x2 matrix) and compare "
+        "with beta at the large mu0 values (40-digit eigenvalues); check that alpha1 mu0 "
+        "tends to k^3/(k+1)^3 and that the package's no-slip motion turns at that rate."
+    ),
+)
+def _frequency(p: dict[str, Any]) -> Outcome:
+    mu0s = sorted(p["mu0_limit"])
+    beta_err, a1_err, nh_err = [], [], 0.0
+    t = np.linspace(0.0, 10.0, 101)
+    for k in p["k_values"]:
+        omega = ref.no_slip_frequency(k)
+        for mu0 in mu0s:
+            e = ref.mp_spectrum(mu0, k)
+            beta_err.append(abs(e.beta - omega) / omega)
+            a1_err.append(abs(e.alpha1 * mu0 / (k / (k + 1)) ** 3 - 1))
+        z = tt.nonholonomic(p["state_fig4"], t, k)
+        rc = tt.spiral_centre(p["state_fig4"], k)
+        ang = np.unwrap(np.angle((z[:, 0] - rc[0]) + 1j * (z[:, 1] - rc[1])))
+        nh_err = max(nh_err, abs(np.polyfit(t, ang, 1)[0] / omega - 1))
+    k0 = p["k_paper"]
+    omega0 = ref.no_slip_frequency(k0)
+    e_last = ref.mp_spectrum(mu0s[-1], k0)
+    n_k = len(p["k_values"])
+    beta_last = max(beta_err[i * len(mu0s) + len(mu0s) - 1] for i in range(n_k))
+    a1_last = max(a1_err[i * len(mu0s) + len(mu0s) - 1] for i in range(n_k))
+    tol = {"beta_rel_at_largest_mu0": 1e-6, "alpha1_mu0_rel_at_largest_mu0": 1e-3, "nh": 1e-12}
+    ok = (
+        beta_last <= tol["beta_rel_at_largest_mu0"]
+        and a1_last <= tol["alpha1_mu0_rel_at_largest_mu0"]
+        and nh_err <= tol["nh"]
+    )
+    return Outcome(
+        verdict="confirmed" if ok else "failed",
+        reproduced={
+            "k": k0,
+            "no_slip_frequency": omega0,
+            "beta_at_largest_mu0": e_last.beta,
+            "alpha1_at_largest_mu0": e_last.alpha1,
+            "largest_mu0": mu0s[-1],
+            "max_beta_error_rel_at_largest_mu0": beta_last,
+            "max_alpha1_mu0_error_rel_at_largest_mu0": a1_last,
+            "max_no_slip_rate_error_rel": nh_err,
+        },
+        tolerance=tol,
+        summary=(
+            f"no-slip rate {sig(omega0, 6)} (k = {sig(k0)}); beta = {sig(e_last.beta, 8)}, "
+            f"alpha1 = {sig(e_last.alpha1, 3)} at mu0 = {sig(mu0s[-1])}"
+        ),
+        evidence=(
+            "beta tends to the rate of rolling without slipping and alpha1 to 0 like "
+            "k^3/((k+1)^3 mu0), for every k."
+            if ok
+            else "beta or alpha1 does not tend to the no-slip values."
+        ),
+    )
+
+
+@register(
+    "limit.convergence",
+    where=Where("Sec. 3", "(3.3)"),
+    claim=(
+        "On each fixed time interval the solution tends, as mu0 -> infinity, to the motion "
+        "without slipping (circles at constant rate)."
+    ),
+    paper_value=None,
+    method=(
+        "For the slipping state of Fig. 4, its no-slip counterpart and every k, measure on "
+        "[0, T] the largest position error and the largest velocity error outside an initial "
+        "layer of width 40/|alpha2| against the no-slip motion, fit their order in mu0, and "
+        "record the velocity error at t = 0 and the position error at t = 1/alpha1."
+    ),
+)
+def _convergence(p: dict[str, Any]) -> Outcome:
+    mu0s = sorted(p["mu0_limit"])
+    t_end = p["t_limit"]
+    pos_order, vel_order, pos_last, vel_last = [], [], 0.0, 0.0
+    start_err, long_err = np.inf, np.inf
+    pos_err_k0: list[float] = []
+    for k in p["k_values"]:
+        slipping = np.asarray(p["state_fig4"])
+        for z0 in (slipping, tt.no_slip_state(slipping, k)):
+            pos, vel = [], []
+            for mu0 in mu0s:
+                s = tt.spectrum(mu0, k)
+                layer = 40.0 / abs(float(s.alpha2))
+                t = np.union1d(np.linspace(0.0, t_end, 1001), np.linspace(layer, t_end, 1001))
+                z = tt.solve(z0, t, mu0, k)
+                zn = tt.nonholonomic(z0, t, k)
+                pos.append(float(np.abs(z[:, :2] - zn[:, :2]).max()))
+                vel.append(float(np.abs(z[t >= layer, 2:] - zn[t >= layer, 2:]).max()))
+                if z0 is slipping:
+                    start_err = min(start_err, float(np.abs(z[0, 2:] - zn[0, 2:]).max()))
+                    t_long = np.array([1.0 / float(s.alpha1)])
+                    far = (
+                        tt.solve(z0, t_long, mu0, k)[:, :2] - tt.nonholonomic(z0, t_long, k)[:, :2]
+                    )
+                    long_err = min(long_err, float(np.abs(far).max()))
+            pos_order.append(ref.log_log_slope(mu0s, pos))
+            vel_order.append(ref.log_log_slope(mu0s, vel))
+            pos_last, vel_last = max(pos_last, pos[-1]), max(vel_last, vel[-1])
+            if k == p["k_paper"] and z0 is slipping:
+                pos_err_k0 = pos
+    initial_slip = float(np.abs(tt.slip_velocity(p["state_fig4"])).max())
+    tol = {"order": -1.0 + 0.05, "error_at_largest_mu0": 1e-2, "does_not_vanish": 0.1}
+    converges = (
+        max(pos_order) <= tol["order"]
+        and max(vel_order) <= tol["order"]
+        and pos_last <= tol["error_at_largest_mu0"]
+        and vel_last <= tol["error_at_largest_mu0"]
+    )
+    not_uniform = start_err >= tol["does_not_vanish"] or long_err >= tol["does_not_vanish"]
+    verdict = "failed" if not converges else ("refined" if not_uniform else "confirmed")
+    evidence = {
+        "failed": "The solution does not approach the no-slip motion at rate 1/mu0.",
+        "confirmed": "The solution approaches the no-slip motion uniformly.",
+        "refined": (
+            "Holds on each fixed interval, with error O(1/mu0) (fitted order "
+            f"{sig(max(pos_order), 3)}) for the positions uniformly on [0, T]; the velocities "
+            "converge at the same rate only outside an initial layer of width ~1/mu0 when z(0) "
+            "slips (at t = 0 their error stays "
+            f"{sig(start_err, 3)} for every mu0), and the limit starts from the no-slip state "
+            "with the same position and angular momentum. The convergence is not uniform in "
+            f"time: at t = 1/alpha1 the position error is still at least {sig(long_err, 3)}."
+        ),
+    }[verdict]
+    return Outcome(
+        verdict=verdict,
+        reproduced={
+            "t_end": t_end,
+            "mu0_limit": mu0s,
+            "position_order": max(pos_order),
+            "velocity_order_outside_layer": max(vel_order),
+            "max_position_error_at_largest_mu0": pos_last,
+            "max_velocity_error_at_largest_mu0": vel_last,
+            "position_errors_k_paper": pos_err_k0,
+            "min_velocity_error_at_t0": start_err,
+            "initial_slip": initial_slip,
+            "min_position_error_at_t_over_alpha1": long_err,
+        },
+        tolerance=tol,
+        summary=(
+            f"on [0, {sig(t_end)}]: position error ~ mu0^{sig(max(pos_order), 3)}; velocity "
+            f"error at t = 0 stays {sig(start_err, 3)}; at t = 1/alpha1 >= {sig(long_err, 3)}"
+        ),
+        evidence=evidence,
+    )

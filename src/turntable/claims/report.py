@@ -1,0 +1,147 @@
+"""Machine- and human-readable reports of the claims registry.
+
+``results/claims.json`` holds everything (package version, git commit,
+parameters, every field of every claim); ``results/claims.md`` is a table a
+person reads.  Both are deterministic: keys are sorted, floats are rounded to
+12 significant digits, and no time stamp is written.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+from collections.abc import Mapping
+from pathlib import Path
+from typing import Any
+
+import turntable
+from turntable.claims import VERDICTS, evaluate_all, resolve_params
+from turntable.claims._core import clean
+
+#: Version of the layout of ``claims.json``.
+SCHEMA_VERSION = 1
+
+
+def git_commit(cwd: str | Path | None = None) -> str:
+    """Return ``git rev-parse HEAD`` in ``cwd``, or ``"unknown"`` outside a git checkout."""
+    try:
+        out = subprocess.run(
+            ["git", "rev-parse", "HEAD"],
+            cwd=cwd,
+            capture_output=True,
+            text=True,
+            check=True,
+            timeout=10,
+        )
+    except (OSError, subprocess.SubprocessError):
+        return "unknown"
+    commit = out.stdout.strip()
+    return commit if len(commit) == 40 else "unknown"
+
+
+def build_report(
+    params: Mapping[str, Any] | None = None, *, commit: str = "unknown"
+) -> dict[str, Any]:
+    """Evaluate every claim and assemble the report.
+
+    Parameters
+    ----------
+    params : mapping, optional
+        Check parameters (the ``claims:`` section of the configuration).
+    commit : str
+        Git commit of the code that produced the report.
+
+    Returns
+    -------
+    dict
+        ``schema, package, version, git_commit, params, order, summary
+        (count per verdict), claims`` (records keyed by id).
+    """
+    p = resolve_params(params)
+    records = evaluate_all(p)
+    counts = {v: sum(r["verdict"] == v for r in records) for v in VERDICTS}
+    counts["total"] = len(records)
+    return clean(
+        {
+            "schema": SCHEMA_VERSION,
+            "package": "turntable",
+            "version": turntable.__version__,
+            "git_commit": commit,
+            "params": p,
+            "order": [r["id"] for r in records],
+            "summary": counts,
+            "claims": {r["id"]: r for r in records},
+        }
+    )
+
+
+def to_json(report: Mapping[str, Any]) -> str:
+    """Serialise a report deterministically (sorted keys, two-space indent, final newline)."""
+    return json.dumps(report, indent=2, sort_keys=True, ensure_ascii=False, allow_nan=False) + "\n"
+
+
+def _cell(text: Any) -> str:
+    return str(text).replace("|", "\\|").replace("\n", " ")
+
+
+def _paper_value(value: Mapping[str, Any] | None) -> str:
+    if not value:
+        return "-"
+    return str(value.get("text", "-"))
+
+
+def to_markdown(report: Mapping[str, Any]) -> str:
+    """Render a report as a Markdown document with one table row per claim."""
+    s = report["summary"]
+    lines = [
+        "# Claims of Ivanova (2019) and their reproduction",
+        "",
+        f"turntable {report['version']}, commit `{report['git_commit']}`. "
+        f"{s['total']} claims: {s['confirmed']} confirmed, {s['refined']} refined, "
+        f"{s['failed']} failed.",
+        "",
+        "| id | where | claim | paper's value | reproduced | verdict |",
+        "|---|---|---|---|---|---|",
+    ]
+    for cid in report["order"]:
+        c = report["claims"][cid]
+        lines.append(
+            "| "
+            + " | ".join(
+                _cell(x)
+                for x in (
+                    f"`{cid}`",
+                    c["where"]["label"],
+                    c["claim"],
+                    _paper_value(c["paper_value"]),
+                    c["summary"],
+                    f"**{c['verdict']}**",
+                )
+            )
+            + " |"
+        )
+    lines += ["", "## Evidence", ""]
+    for cid in report["order"]:
+        c = report["claims"][cid]
+        lines.append(f"- `{cid}` ({c['verdict']}): {_cell(c['evidence'])}")
+    lines += ["", "## Methods", ""]
+    for cid in report["order"]:
+        c = report["claims"][cid]
+        lines.append(f"- `{cid}`: {_cell(c['method'])}")
+    return "\n".join(lines) + "\n"
+
+
+def write_reports(
+    json_path: str | Path,
+    md_path: str | Path,
+    params: Mapping[str, Any] | None = None,
+    *,
+    commit: str = "unknown",
+) -> dict[str, Any]:
+    """Build the report and write it as JSON and as Markdown; return it."""
+    report = build_report(params, commit=commit)
+    for path, text in ((json_path, to_json(report)), (md_path, to_markdown(report))):
+        path = Path(path)
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text, encoding="utf-8")
+    return report

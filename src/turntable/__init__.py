@@ -8,6 +8,7 @@ States are z = (x, y, vx, vy, wx, wy), dimensionless (length R, time
 1/Omega, mass m).
 """
 
+from turntable.limits import limit_error, nonholonomic_period, small_friction_expansion
 from turntable.newton_euler import NewtonEulerResult, newton_euler
 from turntable.solution import (
     ModalTerms,
@@ -46,13 +47,16 @@ __all__ = [
     "conserved",
     "eigenvalues",
     "large_friction_expansion",
+    "limit_error",
     "log_damping_ratio",
     "log_growth_per_turn",
     "modal_terms",
     "newton_euler",
     "no_slip_state",
     "nonholonomic",
+    "nonholonomic_period",
     "slip_velocity",
+    "small_friction_expansion",
     "solve",
     "spectrum",
     "spiral_centre",

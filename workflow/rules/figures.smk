@@ -18,11 +18,11 @@ rule fig1_schematic:
     output:
         pdf="figures/fig1_schematic.pdf",
         png="figures/fig1_schematic.png",
+    log:
+        "logs/fig1_schematic.log",
     params:
         dpi=config["style"]["dpi"],
         tilt=config["fig1_schematic"]["tilt"],
-    log:
-        "logs/fig1_schematic.log",
     script:
         "../../scripts/fig1_schematic.py"
 
@@ -33,13 +33,13 @@ rule fig2_spectrum:
     output:
         pdf="figures/fig2_spectrum.pdf",
         png="figures/fig2_spectrum.png",
+    log:
+        "logs/fig2_spectrum.log",
     params:
         dpi=config["style"]["dpi"],
         k=config["fig2_spectrum"]["k"],
         mu0_range=config["fig2_spectrum"]["mu0_range"],
         n_points=config["fig2_spectrum"]["n_points"],
-    log:
-        "logs/fig2_spectrum.log",
     script:
         "../../scripts/fig2_spectrum.py"
 
@@ -50,6 +50,8 @@ rule fig3_modal_terms:
     output:
         pdf="figures/fig3_modal_terms.pdf",
         png="figures/fig3_modal_terms.png",
+    log:
+        "logs/fig3_modal_terms.log",
     params:
         dpi=config["style"]["dpi"],
         k=config["fig3_modal_terms"]["k"],
@@ -57,8 +59,6 @@ rule fig3_modal_terms:
         state=config["fig3_modal_terms"]["state"],
         t_span=config["fig3_modal_terms"]["t_span"],
         n_points=config["fig3_modal_terms"]["n_points"],
-    log:
-        "logs/fig3_modal_terms.log",
     script:
         "../../scripts/fig3_modal_terms.py"
 
@@ -69,6 +69,8 @@ rule fig4_trajectories:
     output:
         pdf="figures/fig4_trajectories.pdf",
         png="figures/fig4_trajectories.png",
+    log:
+        "logs/fig4_trajectories.log",
     params:
         dpi=config["style"]["dpi"],
         k=config["fig4_trajectories"]["k"],
@@ -76,8 +78,6 @@ rule fig4_trajectories:
         mu0=config["fig4_trajectories"]["mu0"],
         t_span=config["fig4_trajectories"]["t_span"],
         n_points=config["fig4_trajectories"]["n_points"],
-    log:
-        "logs/fig4_trajectories.log",
     script:
         "../../scripts/fig4_trajectories.py"
 
@@ -88,13 +88,13 @@ rule fig5_damping_ratio:
     output:
         pdf="figures/fig5_damping_ratio.pdf",
         png="figures/fig5_damping_ratio.png",
+    log:
+        "logs/fig5_damping_ratio.log",
     params:
         dpi=config["style"]["dpi"],
         k=config["fig5_damping_ratio"]["k"],
         mu0_range=config["fig5_damping_ratio"]["mu0_range"],
         n_points=config["fig5_damping_ratio"]["n_points"],
-    log:
-        "logs/fig5_damping_ratio.log",
     script:
         "../../scripts/fig5_damping_ratio.py"
 
@@ -105,6 +105,8 @@ rule fig6_limit:
     output:
         pdf="figures/fig6_limit.pdf",
         png="figures/fig6_limit.png",
+    log:
+        "logs/fig6_limit.log",
     params:
         dpi=config["style"]["dpi"],
         k=config["fig6_limit"]["k"],
@@ -116,7 +118,5 @@ rule fig6_limit:
         layer_state=config["fig6_limit"]["layer_state"],
         mu0_layer=config["fig6_limit"]["mu0_layer"],
         layer_t_span=config["fig6_limit"]["layer_t_span"],
-    log:
-        "logs/fig6_limit.log",
     script:
         "../../scripts/fig6_limit.py"

@@ -1,0 +1,32 @@
+"""Figure 3: the growing and the decaying parts of x(t).
+
+Caption: the coordinate x(t) = x0 + x+(t) + x-(t) of the centre of the ball split as in
+(2.7): x+ (modes alpha1 +- i beta, growing) and x- (modes alpha2 +- i beta, decaying), for
+each friction coefficient mu0 of the configuration; initial state x = y = 1, v = w = 0,
+k = 2/5 by default. After the first period x- is negligible next to x+.
+"""
+
+# %%
+import matplotlib.pyplot as plt
+import numpy as np
+
+import turntable
+from _style import DOUBLE, save, setup
+
+setup(snakemake)
+p = snakemake.params
+t = np.linspace(*p.t_span, p.n_points)
+
+# %%
+fig, axes = plt.subplots(1, len(p.mu0), figsize=(DOUBLE, 2.4), sharey=True, squeeze=False)
+for ax, mu0 in zip(axes[0], p.mu0, strict=True):
+    terms = turntable.modal_terms(p.state, t, mu0, p.k)
+    x = turntable.solve(p.state, t, mu0, p.k)[:, 0]
+    ax.plot(t, x - terms.centre[:, 0], color="0.75", lw=2.5, label=r"$x - x_0$")
+    ax.plot(t, terms.plus[:, 0], label=r"$x_+$")
+    ax.plot(t, terms.minus[:, 0], "--", label=r"$x_-$")
+    ax.axhline(0.0, color="k", lw=0.4)
+    ax.set(xlabel=r"time $t\Omega$", title=rf"$\mu_0 = {mu0:g}$, $k = {p.k:g}$", xlim=p.t_span)
+axes[0, 0].set_ylabel(r"displacement (units of $R$)")
+axes[0, 0].legend(loc="best")
+save(fig, snakemake)

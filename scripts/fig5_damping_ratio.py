@@ -1,0 +1,34 @@
+"""Figure 5: damping of the decaying modes over one period, against mu0.
+
+Caption: (a) log10 N, where N = exp(2 pi |alpha2| / beta) is the factor by which the
+decaying part z- of the solution shrinks over one period 2 pi / beta (2.9), for several
+inertia ratios k. Dotted: the lower bound log10 e^(2 pi) = 2.7288 of (2.10). (b) The excess
+over the bound on log axes: it vanishes only as mu0 -> 0.
+"""
+
+# %%
+import matplotlib.pyplot as plt
+import numpy as np
+
+import turntable
+from _style import DOUBLE, save, setup
+
+setup(snakemake)
+p = snakemake.params
+mu0 = np.geomspace(*p.mu0_range, p.n_points)
+bound = 2.0 * np.pi / np.log(10.0)  # log10 of e^(2 pi), the infimum of N in (2.10)
+
+# %%
+fig, (ax, ax_ex) = plt.subplots(1, 2, figsize=(DOUBLE, 2.6))
+for k in p.k:
+    log10_n = turntable.log_damping_ratio(mu0, k) / np.log(10.0)
+    ax.plot(mu0, log10_n, label=f"$k = {k:.3g}$")
+    ax_ex.plot(mu0, log10_n - bound, label=f"$k = {k:.3g}$")
+ax.axhline(bound, color="k", ls=":", lw=1.0, label=rf"$2\pi \log_{{10}} e = {bound:.4f}$")
+ax.set(xscale="log", yscale="log", ylabel=r"$\log_{10} N$", title="(a) damping per period")
+ax_ex.set(xscale="log", yscale="log", ylabel=r"$\log_{10} N - 2\pi \log_{10} e$")
+ax_ex.set_title("(b) excess over the bound")
+for a in (ax, ax_ex):
+    a.set_xlabel(r"friction $\mu_0$ (units of $m\Omega$)")
+ax.legend(loc="upper left")
+save(fig, snakemake)

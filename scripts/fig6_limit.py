@@ -1,0 +1,56 @@
+"""Figure 6: the no-slip limit mu0 -> infinity of Section 3.
+
+Caption: (a) paths of the centre over one period 2 pi (k + 1)/k of the no-slip motion for
+growing mu0 (initial state x = y = 1, v = 0, wx = 0, wy = 1 by default), and the no-slip
+circle (3.3) (dashed). (b) Largest distance between the two paths on that interval against
+mu0, with the fitted power law. (c) The initial layer: speed of the centre for an initial
+state off the no-slip constraint, against time on a log axis, and the no-slip speed (dashed).
+(d) Slip speed |u| in the same runs: it decays on the time scale k/(mu0 (k + 1)).
+"""
+
+# %%
+import matplotlib.pyplot as plt
+import numpy as np
+
+import turntable
+from _style import DOUBLE, save, setup
+
+setup(snakemake)
+p = snakemake.params
+t = np.linspace(0.0, float(turntable.nonholonomic_period(p.k)), p.n_points)
+t_layer = np.geomspace(*p.layer_t_span, p.n_points)
+fig, axes = plt.subplots(2, 2, figsize=(DOUBLE, 5.0))
+(ax_a, ax_b), (ax_c, ax_d) = axes
+
+# %% (a) paths and (b) position error over one no-slip period
+for mu0 in p.mu0_trajectories:
+    ax_a.plot(*turntable.solve(p.state, t, mu0, p.k)[:, :2].T, label=rf"$\mu_0 = {mu0:g}$")
+ax_a.plot(*turntable.nonholonomic(p.state, t, p.k)[:, :2].T, "k--", lw=0.9, label="no slip")
+ax_a.plot(*turntable.spiral_centre(p.state, p.k), "ko", ms=4)
+ax_a.plot(*p.state[:2], "o", mfc="w", mec="k", ms=4)
+ax_a.set(aspect="equal", xlabel="$x/R$", ylabel="$y/R$")
+ax_a.set_title(rf"(a) one no-slip period, $t\Omega \leq {t[-1]:.2f}$")
+ax_a.legend(loc="center left", bbox_to_anchor=(1.0, 0.5))
+mu0 = np.geomspace(*p.mu0_error_range, p.n_error)
+error = turntable.limit_error(p.state, t, mu0, p.k)
+slope, offset = np.polyfit(np.log(mu0), np.log(error), 1)
+ax_b.loglog(mu0, error, "o", ms=3, label="computed")
+ax_b.loglog(mu0, np.exp(offset) * mu0**slope, "k-", lw=0.7, label=f"fit: slope {slope:.3f}")
+ax_b.set(xlabel=r"friction $\mu_0$ (units of $m\Omega$)", title="(b) largest position error")
+ax_b.set_ylabel(r"$\max_t |\mathbf{r} - \mathbf{r}_{\rm ns}|/R$ on the interval of (a)")
+ax_b.legend()
+print(f"fitted slope of the position error: {slope:.4f}")
+
+# %% (c) speed and (d) slip speed in the initial layer
+v_ns = np.hypot(*turntable.nonholonomic(p.layer_state, t_layer, p.k)[:, 2:4].T)
+for mu0 in p.mu0_layer:
+    z = turntable.solve(p.layer_state, t_layer, mu0, p.k)
+    ax_c.plot(t_layer, np.hypot(*z[:, 2:4].T), label=rf"$\mu_0 = {mu0:g}$")
+    ax_d.loglog(t_layer, np.hypot(*turntable.slip_velocity(z).T), label=rf"$\mu_0 = {mu0:g}$")
+ax_c.plot(t_layer, v_ns, "k--", lw=0.9, label="no slip")
+ax_c.set(xscale="log", ylabel=r"speed $|\mathbf{v}|/(R\Omega)$", title="(c) initial layer")
+ax_d.set(ylabel=r"slip speed $|\mathbf{u}|/(R\Omega)$", title="(d) slip in the initial layer")
+for ax in (ax_c, ax_d):
+    ax.set_xlabel(r"time $t\Omega$")
+    ax.legend()
+save(fig, snakemake)

@@ -1,0 +1,93 @@
+"""Asymptotic regimes of the model: small friction (Fig. 2) and the no-slip limit (Section 3).
+
+All quantities are dimensionless: length R, time 1/Omega, mass m.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from turntable import _validate
+from turntable.solution import nonholonomic, solve
+from turntable.spectrum import Expansion
+
+
+def small_friction_expansion(mu0: ArrayLike, k: ArrayLike) -> Expansion:
+    """Return the leading small-mu0 behaviour of alpha1, alpha2 and beta.
+
+    Parameters
+    ----------
+    mu0, k : float or array_like
+        Friction coefficient and inertia ratio, finite and > 0.
+
+    Returns
+    -------
+    Expansion
+        ``alpha1 = sqrt(mu0/2) - mu``, ``alpha2 = -sqrt(mu0/2) - mu`` and
+        ``beta = sqrt(mu0/2)``, with ``mu = mu0 (k + 1) / (2 k)`` of (2.2).
+
+    Notes
+    -----
+    From (2.5) with eps = 4 k^2 / (mu0 (k+1)^2) -> infinity as mu0 -> 0:
+    a = sqrt(eps/2) (1 + 1/(2 eps) + O(eps^-2)),
+    b = sqrt(eps/2) (1 - 1/(2 eps) + O(eps^-2)) and mu sqrt(eps/2) = sqrt(mu0/2),
+    so each returned value has an error O(mu0^(3/2)).  To leading order all three
+    rates are sqrt(mu0/2) in size.
+    """
+    mu0 = _validate.positive("mu0", mu0)
+    k = _validate.positive("k", k)
+    mu0, k = np.broadcast_arrays(mu0, k)
+    root = np.sqrt(mu0 / 2.0)
+    mu = mu0 * (k + 1.0) / (2.0 * k)
+    return Expansion(root - mu, -root - mu, root + 0.0 * k)
+
+
+def nonholonomic_period(k: ArrayLike) -> NDArray[np.float64]:
+    """Return the period 2 pi (k + 1) / k of the no-slip motion of the centre.
+
+    Parameters
+    ----------
+    k : float or array_like
+        Inertia ratio, finite and > 0.
+
+    Notes
+    -----
+    Equation (3.3): without slip the centre circles about (x0, y0) of (2.8)
+    at the constant rate k / (k + 1) (2/7 of the plane's rate for k = 2/5).
+    """
+    k = _validate.positive("k", k)
+    return 2.0 * np.pi * (k + 1.0) / k
+
+
+def limit_error(z0: ArrayLike, t: ArrayLike, mu0: ArrayLike, k: float) -> NDArray[np.float64]:
+    """Return the largest distance between the slipping and the no-slip centre.
+
+    Parameters
+    ----------
+    z0 : array_like
+        Initial state (x, y, vx, vy, wx, wy), on or off the no-slip constraint.
+    t : array_like
+        1-D array of times >= 0 on which the distance is sampled.
+    mu0 : float or array_like
+        Friction coefficient(s), finite and > 0.
+    k : float
+        Inertia ratio, finite and > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        Same shape as `mu0`: ``max over t of |r(t; mu0) - r_nh(t)|``, with r the
+        centre from `solve` and r_nh the centre from `nonholonomic`.
+
+    Notes
+    -----
+    Section 3, (3.3): on a fixed interval the solution tends to the no-slip one
+    started from `no_slip_state` (z0); the position error is O(1/mu0).
+    """
+    t = _validate.times("t", t)
+    mu0 = _validate.positive("mu0", mu0)
+    k = _validate.positive_scalar("k", k)
+    r_nh = nonholonomic(z0, t, k)[:, :2]
+    err = [np.max(np.hypot(*(solve(z0, t, m, k)[:, :2] - r_nh).T)) for m in mu0.ravel()]
+    return np.reshape(err, mu0.shape)

@@ -12,7 +12,6 @@ from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
-from scipy.integrate import solve_ivp
 
 from turntable import _validate
 
@@ -115,6 +114,9 @@ def newton_euler(
         dv = friction - g * GAMMA + normal_force(r, v, w) * GAMMA
         dw = (mu0 / k) * np.cross(GAMMA, u)
         return np.concatenate([v, dv, dw])
+
+    # Imported here: scipy.integrate takes ~0.4 s to import and nothing else needs it.
+    from scipy.integrate import solve_ivp
 
     y0 = np.array([z0[0], z0[1], 1.0, z0[2], z0[3], 0.0, z0[4], z0[5], wz0])
     sol = solve_ivp(

@@ -19,8 +19,13 @@ D(t) = (e^{lambda_+ t} - e^{lambda_- t}) / (lambda_+ - lambda_-), evaluated as
     rho(t) = rho0 (E(t) - lambda_+ D(t)) + v0 D(t)
     v(t)   = v0 (E(t) + lambda_- D(t)) + i mu0 rho0 D(t),   E = e^{lambda_+ t}.
 
-Nothing here overflows (Re lambda_- < 0 and alpha1 t stays moderate), nothing
-cancels as the roots merge (mu0 -> 0) or separate (mu0 -> infinity).
+Since lambda_+ + lambda_- = -2 mu is real, E X = e^{lambda_- t} - e^{lambda_+ t}
+(X = expm1(-(lambda_+ - lambda_-) t)) equals
+e^{alpha1 t} (expm1(a) cos(beta t) - i sin(beta t) (2 + expm1(a))) with
+a = (alpha2 - alpha1) t, so `solve` needs only the real functions exp, expm1,
+cos and sin.  Nothing here overflows (Re lambda_- < 0 and alpha1 t stays
+moderate), nothing cancels as the roots merge (mu0 -> 0) or separate
+(mu0 -> infinity).
 """
 
 from __future__ import annotations
@@ -149,27 +154,48 @@ def solve(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> NDArray[np.float
     t = _validate.times("t", t)
     c = _coefficients(z0, mu0, k)
     d = c.lp - c.lm
-    # rho = P E + Q D and v = R E + S D with E = e^{lambda_+ t} and
-    # D = -E X / d, X = expm1(-d t); X is assembled from real functions of
-    # beta t and (alpha1 - alpha2) t (the decaying mode may underflow to 0).
-    p, q = c.rho0, -(c.v0 - c.lp * c.rho0) / d
-    r_, s_ = c.v0, -(c.lm * c.v0 + 1j * c.mu0 * c.rho0) / d
+    # With D = -E X / d, X = expm1(-d t) and E = e^{lambda_+ t}:
+    #   rho = rho0 E + q E X,   v = v0 E + qv E X,
+    #   E X = e^{lambda_- t} - e^{lambda_+ t}
+    #       = G (expm1(a) cos(beta t) - i sin(beta t) (2 + expm1(a))),
+    # with G = e^{alpha1 t} and a = (alpha2 - alpha1) t <= 0: no cancellation,
+    # no overflow (the decaying mode may underflow to 0), real functions only.
+    q = -(c.v0 - c.lp * c.rho0) / d
+    qv = -(c.lm * c.v0 + 1j * c.mu0 * c.rho0) / d
+    bt = c.lp.imag * t
     with np.errstate(under="ignore"):
-        cos, sin = np.cos(c.lp.imag * t), np.sin(c.lp.imag * t)
-        em1 = np.expm1(d.real * -t)
-        x = em1 * (cos * cos - sin * sin) - 2.0 * sin * sin - 2j * ((em1 + 1.0) * sin * cos)
-        e_plus = np.exp(c.lp.real * t) * (cos + 1j * sin)
-        rho = e_plus * (p + q * x)
-        v = e_plus * (r_ + s_ * x)
-    out = np.empty((t.size, 6))
-    out[:, 0] = c.rc.real + rho.real
-    out[:, 1] = c.rc.imag + rho.imag
-    out[:, 2] = v.real
-    out[:, 3] = v.imag
-    # w = r_c - i v / k
-    out[:, 4] = c.rc.real + v.imag / c.k
-    out[:, 5] = c.rc.imag - v.real / c.k
-    return out
+        em1 = np.expm1(-d.real * t)
+    basis = np.empty((5, t.size))
+    basis[0] = 1.0
+    growth = np.exp(c.lp.real * t)
+    np.multiply(growth, np.cos(bt), out=basis[1])  # Re E
+    np.multiply(growth, np.sin(bt), out=basis[2])  # Im E
+    np.multiply(basis[1], em1, out=basis[3])  # Re E X
+    np.multiply(basis[2], em1 + 2.0, out=basis[4])  # -Im E X
+    return basis.T @ _solution_matrix(c.rc, c.rho0, q, c.v0, qv, c.k)
+
+
+def _solution_matrix(
+    rc: complex, p: complex, q: complex, pv: complex, qv: complex, k: float
+) -> NDArray[np.float64]:
+    """Coefficients of z(t) on the basis (1, Re E, Im E, Re E X, -Im E X).
+
+    rho = p E + q E X and v = pv E + qv E X in real form; r = r_c + rho,
+    w = r_c - i v / k.
+    """
+
+    def real_form(a: complex, b: complex) -> NDArray[np.float64]:
+        # (a E + b E X) -> rows give (Re, Im) on the basis without the constant
+        return np.array([[a.real, a.imag], [-a.imag, a.real], [b.real, b.imag], [b.imag, -b.real]])
+
+    rho, v = real_form(p, q), real_form(pv, qv)
+    m = np.zeros((5, 6))
+    m[0] = [rc.real, rc.imag, 0.0, 0.0, rc.real, rc.imag]
+    m[1:, 0:2] = rho
+    m[1:, 2:4] = v
+    m[1:, 4] = v[:, 1] / k
+    m[1:, 5] = -v[:, 0] / k
+    return m
 
 
 class ModalTerms(NamedTuple):

@@ -58,6 +58,10 @@ def save(fig: Figure, snakemake: Any) -> None:
     snakemake : snakemake.script.Snakemake
         Supplies ``output.pdf``, ``output.png`` and ``params.dpi``.
     """
+    engine = fig.get_layout_engine()
+    if engine is not None:  # lay out once, not again for each file
+        engine.execute(fig)
+        fig.set_layout_engine("none")
     for fmt in ("pdf", "png"):
         path = Path(snakemake.output[fmt])
         tmp = path.with_name(f".{path.name}.partial")

@@ -20,9 +20,14 @@ check_config(config)
 
 
 include: "workflow/rules/figures.smk"
+include: "workflow/rules/claims.smk"
+include: "workflow/rules/paper.smk"
 
 
 rule all:
     default_target: True
     input:
         FIGURES,
+        "results/claims.json",
+        "results/claims.md",
+        "paper/paper.pdf",

@@ -373,8 +373,8 @@ def _unstable_focus(p: dict[str, Any]) -> Outcome:
         reproduced={
             "min_alpha1": min_a1,
             "max_alpha2": max_a2,
-            "mu0_grid": p["mu0_grid"],
-            "n_grid": p["n_grid"],
+            "mu0_range": p["mu0_range"],
+            "n_points": p["n_points"],
             "signs_at_probes_high_precision": mp_ok,
         },
         tolerance={"alpha1_min_above": 0.0, "alpha2_max_below": 0.0},

@@ -22,8 +22,8 @@ SIGNIFICANT_DIGITS = 12
 DEFAULT_PARAMS: dict[str, Any] = {
     "k_paper": 0.4,
     "k_values": [0.05, 0.4, 0.6666666666666666, 1.0],
-    "mu0_grid": [1.0e-6, 1.0e6],
-    "n_grid": 241,
+    "mu0_range": [1.0e-6, 1.0e6],
+    "n_points": 241,
     "mu0_probe": [1.0e-4, 1.0e-2, 0.1, 1.0, 10.0, 1.0e3, 1.0e6],
     "mu0_small": [1.0e-6, 1.0e-8, 1.0e-10],
     "mu0_reference": [0.1, 1.0, 10.0],
@@ -102,11 +102,11 @@ def resolve_params(params: Mapping[str, Any] | None = None) -> dict[str, Any]:
     out: dict[str, Any] = {}
     out["k_paper"] = _positive("k_paper", p["k_paper"])
     out["k_values"] = _positive_list("k_values", p["k_values"])
-    grid = _positive_list("mu0_grid", p["mu0_grid"], min_items=2)
+    grid = _positive_list("mu0_range", p["mu0_range"], min_items=2)
     if len(grid) != 2 or not grid[0] < grid[1]:
-        _fail("mu0_grid", "[low, high] with 0 < low < high", p["mu0_grid"])
-    out["mu0_grid"] = grid
-    out["n_grid"] = _integer("n_grid", p["n_grid"], 16, 100000)
+        _fail("mu0_range", "[low, high] with 0 < low < high", p["mu0_range"])
+    out["mu0_range"] = grid
+    out["n_points"] = _integer("n_points", p["n_points"], 16, 100000)
     for key in ("mu0_probe", "mu0_reference", "mu0_fig3", "mu0_spiral"):
         out[key] = _positive_list(key, p[key])
     out["mu0_small"] = _positive_list("mu0_small", p["mu0_small"], min_items=2)
@@ -125,9 +125,9 @@ def resolve_params(params: Mapping[str, Any] | None = None) -> dict[str, Any]:
 
 
 def mu0_grid(params: Mapping[str, Any]) -> NDArray[np.float64]:
-    """Return the log-spaced grid of mu0 described by ``mu0_grid`` and ``n_grid``."""
-    low, high = params["mu0_grid"]
-    return np.logspace(np.log10(low), np.log10(high), params["n_grid"])
+    """Return the log-spaced grid of mu0 described by ``mu0_range`` and ``n_points``."""
+    low, high = params["mu0_range"]
+    return np.logspace(np.log10(low), np.log10(high), params["n_points"])
 
 
 def random_states(params: Mapping[str, Any]) -> NDArray[np.float64]:

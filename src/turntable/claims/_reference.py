@@ -71,11 +71,14 @@ class MpSpectrum(NamedTuple):
 def mp_spectrum(mu0: float, k: float) -> MpSpectrum:
     """Eigenvalues of L computed by mpmath's QR algorithm with `DPS` digits.
 
-    The matrix is built in mpmath arithmetic from the block form (1.7), so
-    that its entries mu0 and mu0/k carry `DPS` digits.  Of the six
-    eigenvalues the two of smallest modulus (the kernel) are dropped; of the
-    other four, the two of largest real part give alpha1 and beta, the two
-    of smallest real part give alpha2.
+    The 6x6 matrix is built in mpmath arithmetic from the block form (1.7),
+    so that its entries mu0 and mu0/k carry `DPS` digits.  Each of its 2x2
+    blocks is checked to be of the form a I + b J; J squares to -I, so L is
+    the real form of the complex 3x3 matrix with entries a + i b, and the
+    spectrum of L is the spectrum of that matrix together with its complex
+    conjugate.  The 3x3 problem is solved (six times faster than the 6x6
+    one); of its eigenvalues the one of smallest modulus (the kernel) is
+    dropped, the other two are alpha1 + i beta and alpha2 - i beta.
     """
     with mpmath.workdps(DPS):
         m = mpmath.mpf(mu0)
@@ -88,15 +91,24 @@ def mp_spectrum(mu0: float, k: float) -> MpSpectrum:
             [c, 0, 0, -c, -c, 0],
             [0, c, c, 0, 0, -c],
         ]
-        ev = mpmath.eig(mpmath.matrix(rows), left=False, right=False)
-        ev = sorted(ev, key=lambda z: abs(z))[2:]
-        ev = sorted(ev, key=lambda z: -z.real)
-        # Within each conjugate pair the real parts agree to DPS digits: order by imag.
-        ev = sorted(ev[:2], key=lambda z: -z.imag) + sorted(ev[2:], key=lambda z: -z.imag)
-        alpha1 = (ev[0].real + ev[1].real) / 2
-        alpha2 = (ev[2].real + ev[3].real) / 2
-        beta = (abs(ev[0].imag) + abs(ev[1].imag) + abs(ev[2].imag) + abs(ev[3].imag)) / 4
-        return MpSpectrum(float(alpha1), float(alpha2), float(beta), tuple(ev))
+        blocks = [[None] * 3 for _ in range(3)]
+        for i in range(3):
+            for j in range(3):
+                (a, mb), (b, a2) = (
+                    rows[2 * i][2 * j : 2 * j + 2],
+                    rows[2 * i + 1][2 * j : 2 * j + 2],
+                )
+                if a != a2 or mb != -b:
+                    raise ArithmeticError(f"block ({i}, {j}) of L is not of the form a I + b J")
+                blocks[i][j] = mpmath.mpc(a, b)
+        ev = mpmath.eig(mpmath.matrix(blocks), left=False, right=False)
+        ev = sorted(ev, key=lambda z: abs(z))[1:]
+        plus, minus = sorted(ev, key=lambda z: -z.real)
+        roots = (plus, mpmath.conj(plus), mpmath.conj(minus), minus)
+        if not plus.imag > 0 > minus.imag:  # pragma: no cover - would contradict (2.4)
+            raise ArithmeticError("unexpected signs of the imaginary parts")
+        beta = (plus.imag - minus.imag) / 2
+        return MpSpectrum(float(plus.real), float(minus.real), float(beta), roots)
 
 
 def float_spectrum(matrix: NDArray[np.float64]) -> MpSpectrum:

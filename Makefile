@@ -1,16 +1,30 @@
 # make        set up .venv (pinned) and build everything with Snakemake
 # make test   set up .venv (pinned) and run the test suite
+# make notebooks / make report / make readme-figure   see README.md
 PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 CORES ?= all
 
-.PHONY: all setup test lint bench lock clean
+.PHONY: all setup test lint bench lock clean notebooks report readme-figure
 
 all: $(STAMP)
-	@if [ -f Snakefile ]; then $(BIN)/snakemake --cores $(CORES); \
-	else echo "set-up done (no pipeline yet)"; fi
+	$(BIN)/snakemake --cores $(CORES)
+	$(BIN)/snakemake --report results/report.html
+
+# Every script of scripts/ executed as a notebook with its outputs: results/notebooks/.
+notebooks: $(STAMP)
+	$(BIN)/snakemake --cores $(CORES) notebooks
+
+# Self-contained HTML page with every figure and its caption (needs the built figures).
+report: $(STAMP)
+	$(BIN)/snakemake --cores $(CORES)
+	$(BIN)/snakemake --report results/report.html
+
+# Refresh the figure shown in README.md (docs/fig4_trajectories.png).
+readme-figure: $(STAMP)
+	$(BIN)/snakemake --cores $(CORES) readme_figure
 
 setup: $(STAMP)
 
@@ -26,6 +40,8 @@ test: $(STAMP)
 lint: $(STAMP)
 	$(BIN)/ruff check src tests benchmarks scripts
 	$(BIN)/ruff format --check src tests benchmarks scripts
+	$(BIN)/snakefmt --check .
+	$(BIN)/snakemake --lint
 
 bench: $(STAMP)
 	$(BIN)/python benchmarks/run.py

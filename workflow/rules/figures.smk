@@ -20,6 +20,8 @@ rule fig1_schematic:
         png="figures/fig1_schematic.png",
     log:
         "logs/fig1_schematic.log",
+    conda:
+        "../envs/turntable.yaml"
     params:
         dpi=config["style"]["dpi"],
         tilt=config["fig1_schematic"]["tilt"],
@@ -35,6 +37,8 @@ rule fig2_spectrum:
         png="figures/fig2_spectrum.png",
     log:
         "logs/fig2_spectrum.log",
+    conda:
+        "../envs/turntable.yaml"
     params:
         dpi=config["style"]["dpi"],
         k=config["fig2_spectrum"]["k"],
@@ -52,6 +56,8 @@ rule fig3_modal_terms:
         png="figures/fig3_modal_terms.png",
     log:
         "logs/fig3_modal_terms.log",
+    conda:
+        "../envs/turntable.yaml"
     params:
         dpi=config["style"]["dpi"],
         k=config["fig3_modal_terms"]["k"],
@@ -71,6 +77,8 @@ rule fig4_trajectories:
         png="figures/fig4_trajectories.png",
     log:
         "logs/fig4_trajectories.log",
+    conda:
+        "../envs/turntable.yaml"
     params:
         dpi=config["style"]["dpi"],
         k=config["fig4_trajectories"]["k"],
@@ -90,6 +98,8 @@ rule fig5_damping_ratio:
         png="figures/fig5_damping_ratio.png",
     log:
         "logs/fig5_damping_ratio.log",
+    conda:
+        "../envs/turntable.yaml"
     params:
         dpi=config["style"]["dpi"],
         k=config["fig5_damping_ratio"]["k"],
@@ -107,6 +117,8 @@ rule fig6_limit:
         png="figures/fig6_limit.png",
     log:
         "logs/fig6_limit.log",
+    conda:
+        "../envs/turntable.yaml"
     params:
         dpi=config["style"]["dpi"],
         k=config["fig6_limit"]["k"],
@@ -120,3 +132,8 @@ rule fig6_limit:
         layer_t_span=config["fig6_limit"]["layer_t_span"],
     script:
         "../../scripts/fig6_limit.py"
+
+
+rule figures:
+    input:
+        FIGURES,

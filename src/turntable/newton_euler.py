@@ -57,8 +57,8 @@ def newton_euler(
     *,
     wz0: float = 0.0,
     g: float = 9.81,
-    method: str = "DOP853",
-    rtol: float = 1e-11,
+    method: str = "LSODA",
+    rtol: float = 1e-12,
     atol: float = 1e-12,
 ) -> NewtonEulerResult:
     """Integrate the full 3-D Newton-Euler equations of the ball.

@@ -22,6 +22,7 @@ check_config(config)
 include: "workflow/rules/figures.smk"
 include: "workflow/rules/claims.smk"
 include: "workflow/rules/paper.smk"
+include: "workflow/rules/notebooks.smk"
 
 
 rule all:
@@ -31,3 +32,4 @@ rule all:
         "results/claims.json",
         "results/claims.md",
         "paper/paper.pdf",
+        NOTEBOOKS,

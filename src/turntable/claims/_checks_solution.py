@@ -200,13 +200,14 @@ def _damping(p: dict[str, Any]) -> Outcome:
     grid = mu0_grid(p)
     min_ratio, monotone, formula_err = np.inf, True, 0.0
     small = sorted(p["mu0_small"], reverse=True)
-    excess, slopes = {}, []
+    excess: list[np.ndarray] = []
+    slopes: list[float] = []
     for k in p["k_values"]:
         log_n = tt.log_damping_ratio(grid, k)
         min_ratio = min(min_ratio, float((log_n / (2 * np.pi)).min()))
         monotone = monotone and bool(np.all(np.diff(log_n) > 0))
         ex = tt.log_damping_ratio(np.array(small), k) - 2 * np.pi
-        excess[repr(k)] = ex
+        excess.append(ex)
         slopes.append(ref.log_log_slope(small, ex))
         min_ratio = min(min_ratio, float((1 + ex / (2 * np.pi)).min()))
         for mu0 in p["mu0_probe"]:
@@ -222,10 +223,10 @@ def _damping(p: dict[str, Any]) -> Outcome:
     bound = float(mpmath.exp(2 * mpmath.pi))
     n_small = float(np.exp(tt.log_damping_ratio(small[0], k0)))
     n_smallest = float(np.exp(tt.log_damping_ratio(small[-1], k0)))
-    log10_n = {repr(m): float(tt.log_damping_ratio(m, k0) / np.log(10)) for m in p["mu0_reference"]}
+    log10_n = [float(tt.log_damping_ratio(m, k0) / np.log(10)) for m in p["mu0_reference"]]
     tol = {"ratio_min_above": 1.0, "formula_rel": 1e-20, "excess_at_smallest_mu0": 1e-3}
     holds = min_ratio > tol["ratio_min_above"] and formula_err <= tol["formula_rel"]
-    sharp = monotone and max(float(v[-1]) for v in excess.values()) < tol["excess_at_smallest_mu0"]
+    sharp = monotone and max(float(v[-1]) for v in excess) < tol["excess_at_smallest_mu0"]
     verdict = "failed" if not holds else ("refined" if sharp else "confirmed")
     evidence = {
         "failed": "The ratio |alpha2|/beta falls to 1 or below somewhere, or (2.10) is wrong.",
@@ -245,11 +246,13 @@ def _damping(p: dict[str, Any]) -> Outcome:
             "ln_n_increasing_in_mu0": monotone,
             "max_printed_ratio_error_rel": formula_err,
             "mu0_small": small,
-            "ln_n_excess_at_small_mu0": excess,
+            "k_values": p["k_values"],
+            "ln_n_excess_at_small_mu0_per_k": excess,
             "excess_slope": float(np.mean(slopes)),
             "k": k0,
             "n_at_mu0_small_first": n_small,
             "n_at_mu0_small_last": n_smallest,
+            "mu0_reference": p["mu0_reference"],
             "log10_n_at_reference_mu0": log10_n,
         },
         tolerance=tol,
@@ -393,7 +396,7 @@ def _spiral(p: dict[str, Any]) -> Outcome:
     tol = {"growth_rate_rel": 1e-6, "angular_rate_rel": 1e-9}
     ok = rate_err <= tol["growth_rate_rel"] and freq_err <= tol["angular_rate_rel"] and outward
     k0 = p["k_paper"]
-    per_turn = {repr(m): float(np.exp(tt.log_growth_per_turn(m, k0))) for m in p["mu0_spiral"]}
+    per_turn = [float(np.exp(tt.log_growth_per_turn(m, k0))) for m in p["mu0_spiral"]]
     return Outcome(
         verdict="confirmed" if ok else "failed",
         reproduced={

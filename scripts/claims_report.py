@@ -14,7 +14,7 @@ report = write_reports(
     snakemake.output.json,
     snakemake.output.md,
     dict(snakemake.params.claims),
-    commit=git_commit(),
+    commit=git_commit(snakemake.params.repo),
 )
 logging.info("claims: %s", report["summary"])
 for cid in report["order"]:

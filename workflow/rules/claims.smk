@@ -1,8 +1,11 @@
 # The claims registry (turntable.claims): every claim of the paper checked against independent
 # references, with a verdict. The package sources are inputs, so that editing the physics or
-# a check re-runs the rule.
+# a check re-runs the rule. Paths of sources are taken from the repository (workflow.basedir),
+# so that the rule also runs with --directory elsewhere.
 
-CLAIMS_SOURCES = sorted(str(p) for p in Path("src/turntable").rglob("*.py"))
+CLAIMS_SOURCES = sorted(
+    str(p) for p in (Path(workflow.basedir) / "src" / "turntable").rglob("*.py")
+)
 
 
 rule claims:
@@ -15,5 +18,6 @@ rule claims:
         "logs/claims.log",
     params:
         claims=config["claims"],
+        repo=workflow.basedir,
     script:
         "../../scripts/claims_report.py"

@@ -1,8 +1,11 @@
 # The reproduction article: paper/paper.typ compiled with the typst Python package. Every number
-# in it is read from results/claims.json, which the PDF also carries as an attachment.
+# in it is read from results/claims.json, which the PDF also carries as an attachment. The
+# sources are taken from the repository (workflow.basedir) and staged next to the output, so
+# that the rule also runs with --directory elsewhere.
 
-PAPER_SOURCES = sorted(str(p) for p in Path("paper").glob("*.typ")) + [
-    "paper/references.bib"
+PAPER_DIR = Path(workflow.basedir) / "paper"
+PAPER_SOURCES = sorted(str(p) for p in PAPER_DIR.glob("*.typ")) + [
+    str(PAPER_DIR / "references.bib")
 ]
 
 
@@ -16,7 +19,7 @@ rule paper:
     log:
         "logs/paper.log",
     params:
-        main="paper/paper.typ",
+        main="paper.typ",
         timestamp=config["paper"]["timestamp"],
     script:
         "../../scripts/build_paper.py"

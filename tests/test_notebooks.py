@@ -1,4 +1,4 @@
-"""Notebooks of the scripts (rule ``notebook``, workflow/rules/notebooks.smk).
+"""Notebooks of the scripts (rule ``notebook``, workflow/rules/notebooks.smk) and the report.
 
 One notebook is built for real, in a copy of the project in a temporary directory: that of
 Fig. 1, whose rule is the fastest. The figure the notebook draws must be byte-identical to
@@ -9,6 +9,7 @@ equivalent to the rule's; the executed notebook must hold the figure as an inlin
 from __future__ import annotations
 
 import json
+import re
 import shutil
 import subprocess
 import sys
@@ -93,3 +94,26 @@ def test_notebook_draws_the_same_figure_elsewhere(fig1_notebook: Path) -> None:
     pdf = redirected.with_suffix(".pdf").read_bytes()
     assert pdf.startswith(b"%PDF")
     assert pdf == built.with_suffix(".pdf").read_bytes()
+
+
+def test_report_holds_figure_and_caption(fig1_notebook: Path, tmp_path: Path) -> None:
+    """`snakemake --report` embeds the figure with its caption from workflow/report/."""
+    html = tmp_path / "report.html"
+    result = _snakemake(fig1_notebook, "--report", str(html), "figures/fig1_schematic.png")
+    assert result.returncode == 0, result.stdout + result.stderr
+    text = html.read_text()
+    caption = (ROOT / "workflow/report/fig1_schematic.rst").read_text()
+    first_words = " ".join(caption.replace("**", "").split()[:6])
+    plain = re.sub(r"<[^>]+>", "", text.replace("\\n", " "))  # caption is HTML in a JSON string
+    assert first_words in " ".join(plain.split())
+    assert "fig1_schematic.png" in text
+    png = (fig1_notebook / "figures/fig1_schematic.png").stat().st_size
+    assert html.stat().st_size > png  # self-contained: the image is inside
+
+
+def test_every_figure_has_a_caption() -> None:
+    """Each of the six figure rules registers its PNG for the report with a caption file."""
+    rules = (ROOT / "workflow/rules/figures.smk").read_text()
+    for name in [p.stem for p in (ROOT / "scripts").glob("fig*.py")]:
+        assert f'caption="../report/{name}.rst"' in rules, name
+        assert (ROOT / "workflow/report" / f"{name}.rst").read_text().strip(), name

@@ -17,7 +17,11 @@ rule fig1_schematic:
         STYLE_FILES,
     output:
         pdf="figures/fig1_schematic.pdf",
-        png="figures/fig1_schematic.png",
+        png=report(
+            "figures/fig1_schematic.png",
+            caption="../report/fig1_schematic.rst",
+            category="Figures",
+        ),
     log:
         "logs/fig1_schematic.log",
     conda:
@@ -34,7 +38,11 @@ rule fig2_spectrum:
         STYLE_FILES,
     output:
         pdf="figures/fig2_spectrum.pdf",
-        png="figures/fig2_spectrum.png",
+        png=report(
+            "figures/fig2_spectrum.png",
+            caption="../report/fig2_spectrum.rst",
+            category="Figures",
+        ),
     log:
         "logs/fig2_spectrum.log",
     conda:
@@ -53,7 +61,11 @@ rule fig3_modal_terms:
         STYLE_FILES,
     output:
         pdf="figures/fig3_modal_terms.pdf",
-        png="figures/fig3_modal_terms.png",
+        png=report(
+            "figures/fig3_modal_terms.png",
+            caption="../report/fig3_modal_terms.rst",
+            category="Figures",
+        ),
     log:
         "logs/fig3_modal_terms.log",
     conda:
@@ -74,7 +86,11 @@ rule fig4_trajectories:
         STYLE_FILES,
     output:
         pdf="figures/fig4_trajectories.pdf",
-        png="figures/fig4_trajectories.png",
+        png=report(
+            "figures/fig4_trajectories.png",
+            caption="../report/fig4_trajectories.rst",
+            category="Figures",
+        ),
     log:
         "logs/fig4_trajectories.log",
     conda:
@@ -95,7 +111,11 @@ rule fig5_damping_ratio:
         STYLE_FILES,
     output:
         pdf="figures/fig5_damping_ratio.pdf",
-        png="figures/fig5_damping_ratio.png",
+        png=report(
+            "figures/fig5_damping_ratio.png",
+            caption="../report/fig5_damping_ratio.rst",
+            category="Figures",
+        ),
     log:
         "logs/fig5_damping_ratio.log",
     conda:
@@ -114,7 +134,11 @@ rule fig6_limit:
         STYLE_FILES,
     output:
         pdf="figures/fig6_limit.pdf",
-        png="figures/fig6_limit.png",
+        png=report(
+            "figures/fig6_limit.png",
+            caption="../report/fig6_limit.rst",
+            category="Figures",
+        ),
     log:
         "logs/fig6_limit.log",
     conda:

@@ -1,7 +1,7 @@
 # The reproduction article: paper/paper.typ compiled with the typst Python package. Every number
 # in it is read from results/claims.json, which the PDF also carries as an attachment. The
-# sources are taken from the repository (workflow.basedir) and staged next to the output, so
-# that the rule also runs with --directory elsewhere.
+# sources are taken from the repository (workflow.basedir); the script compiles a copy of the
+# inputs, so that the rule also runs with --directory elsewhere.
 
 PAPER_DIR = Path(workflow.basedir) / "paper"
 PAPER_SOURCES = sorted(str(p) for p in PAPER_DIR.glob("*.typ")) + [

@@ -17,7 +17,7 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 PAPER = ROOT / "paper" / "paper.typ"
-HELPERS = ROOT / "paper" / "helpers.typ"
+VALUES = ROOT / "paper" / "values.typ"
 
 _IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_-]*")
 _KEYWORDS = {"let", "set", "show", "import", "include"}
@@ -245,10 +245,10 @@ def test_every_figure_comes_from_figures_and_names_its_script() -> None:
 
 def test_numbers_come_from_the_claims_report() -> None:
     text = PAPER.read_text(encoding="utf-8")
-    helpers = HELPERS.read_text(encoding="utf-8")
-    assert 'json("../results/claims.json")' in helpers
+    values = VALUES.read_text(encoding="utf-8")
+    assert 'json("../results/claims.json")' in values
     assert re.search(r'pdf\.attach\(\s*"\.\./results/claims\.json"', text)
-    assert '#import "helpers.typ"' in text
+    assert '#import "values.typ"' in text
     # every claim id used in the text exists in the registry
     from turntable import claims
 

@@ -22,6 +22,7 @@ check_config(config)
 include: "workflow/rules/figures.smk"
 include: "workflow/rules/claims.smk"
 include: "workflow/rules/paper.smk"
+include: "workflow/rules/study.smk"
 include: "workflow/rules/notebooks.smk"
 include: "workflow/rules/report.smk"
 
@@ -33,4 +34,5 @@ rule all:
         "results/claims.json",
         "results/claims.md",
         "paper/paper.pdf",
+        STUDY_OUTPUTS,
         NOTEBOOKS,

@@ -1,0 +1,160 @@
+"""The parameter study: turntable.study and rules study_k / study (workflow/rules/study.smk).
+
+Expected values come from the high-precision roots of the characteristic polynomial
+(tests/reference.py, sympy + mpmath) and from the values printed in the paper; each check
+of `section2_checks` is also shown to fail on a deliberately wrong input.
+"""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import mpmath
+import numpy as np
+import pytest
+import yaml
+
+import turntable.study as study
+from reference import K_BALL, exact_roots
+from turntable import Spectrum
+
+ROOT = Path(__file__).resolve().parents[1]
+Z_FIG4 = [1.0, 1.0, 0.0, 0.0, 0.0, 1.0]
+T = np.linspace(0.0, 20.0, 50)
+MU0 = np.geomspace(1e-4, 1e4, 33)
+
+
+@pytest.fixture(scope="module")
+def ball() -> dict:
+    return study.section2_checks(K_BALL, MU0, Z_FIG4, T)
+
+
+def test_all_checks_hold_on_a_wide_grid(ball: dict) -> None:
+    assert ball["checks"] == dict.fromkeys(ball["checks"], True)
+    assert set(ball["checks"]) == {
+        "unstable_focus",
+        "damping_bound",
+        "roots",
+        "centre",
+        "conservation",
+        "per_turn_decreasing",
+        "peak_bound",
+    }
+
+
+@pytest.mark.parametrize("i", [0, 8, 16, 24, 32])
+def test_values_match_high_precision_roots(ball: dict, i: int) -> None:
+    """alpha1, alpha2, beta and ln N against mpmath roots of det(lambda I - L)."""
+    roots = exact_roots(MU0[i], K_BALL)
+    alpha1, beta = float(roots[0].real), float(roots[0].imag)
+    alpha2 = float(roots[2].real)
+    assert ball["alpha1"][i] == pytest.approx(alpha1, rel=1e-12)
+    assert ball["alpha2"][i] == pytest.approx(alpha2, rel=1e-12)
+    assert ball["beta"][i] == pytest.approx(beta, rel=1e-12)
+    log_n = float(2 * mpmath.pi * abs(roots[2].real) / roots[2].imag)
+    assert ball["log_N"][i] == pytest.approx(log_n, rel=1e-12)
+    assert ball["decay_ratio"][i] == pytest.approx(abs(alpha2) / beta, rel=1e-12)
+
+
+def test_printed_reference_values() -> None:
+    """The paper's values at k = 2/5 for mu0 = 0.1, 1, 10 (10 digits)."""
+    r = study.section2_checks(K_BALL, [0.1, 1.0, 10.0], Z_FIG4, T)
+    np.testing.assert_allclose(r["alpha1"], [0.0850090103, 0.0225872323, 0.00233158482], 1e-8)
+    np.testing.assert_allclose(r["alpha2"], [-0.4350090103, -3.5225872323, -35.0023315848], 1e-9)
+    np.testing.assert_allclose(r["beta"], [0.1923010281, 0.2820735651, 0.285676224], 1e-8)
+    log10_n = np.asarray(r["log_N"]) / np.log(10.0)
+    np.testing.assert_allclose(log10_n, [6.1728, 34.077, 334.3], rtol=2e-4)
+
+
+def test_spiral_centre_of_fig4(ball: dict) -> None:
+    assert ball["centre"] == [0.0, 1.0]  # (x0, y0) = (0, 1), the heavy dot of Fig. 4
+
+
+def test_centre_check_fails_with_the_other_sign(monkeypatch: pytest.MonkeyPatch) -> None:
+    """With y0 = (k wy - vx)/k (the minus sign the OCR of (2.8) suggests) the check fails."""
+
+    def minus_sign(z0: list[float], k: float) -> np.ndarray:
+        return np.array([(k * z0[4] - z0[3]) / k, (k * z0[5] - z0[2]) / k])
+
+    monkeypatch.setattr(study, "spiral_centre", minus_sign)
+    z0 = [1.0, 1.0, 0.3, -0.2, 0.1, 0.5]  # vx != 0, so the two signs differ
+    r = study.section2_checks(K_BALL, MU0[:5], z0, T)
+    assert r["checks"]["centre"] is False
+    assert r["centre_residual"] > 0.01
+
+
+def test_conservation_check_fails_on_a_wrong_solution(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A 'solution' whose velocity is off by 1e-6 of its size breaks conservation."""
+    solve = study.solve
+
+    def perturbed(z0: list[float], t: np.ndarray, mu0: float, k: float) -> np.ndarray:
+        z = solve(z0, t, mu0, k)
+        z[:, 2] *= 1.0 + 1e-6
+        return z
+
+    monkeypatch.setattr(study, "solve", perturbed)
+    z0 = [1.0, 1.0, 0.3, -0.2, 0.1, 0.5]
+    r = study.section2_checks(K_BALL, MU0[:5], z0, T)
+    assert r["checks"]["conservation"] is False
+
+
+def test_root_check_fails_on_a_wrong_root(monkeypatch: pytest.MonkeyPatch) -> None:
+    spectrum = study.spectrum
+
+    def shifted(mu0: np.ndarray, k: float) -> Spectrum:
+        s = spectrum(mu0, k)
+        return s._replace(beta=s.beta * (1.0 + 1e-6))
+
+    monkeypatch.setattr(study, "spectrum", shifted)
+    r = study.section2_checks(K_BALL, MU0, Z_FIG4, T)
+    assert r["checks"]["roots"] is False
+
+
+def test_summary_lists_failures(ball: dict) -> None:
+    bad = dict(ball, checks=dict(ball["checks"], damping_bound=False))
+    s = study.summarize([ball, bad])
+    assert s["all_passed"] is False
+    assert s["failed"] == [f"k={K_BALL}: damping_bound"]
+    assert study.summarize([ball])["all_passed"] is True
+    per_k = s["per_k"][0]
+    # the grid maximum of alpha1 lies below the closed-form peak, and close to it
+    assert per_k["max_alpha1"] <= per_k["peak"]["alpha1"]
+    assert per_k["max_alpha1"] == pytest.approx(per_k["peak"]["alpha1"], rel=0.05)
+    assert per_k["min_log_N_over_2pi"] > 1.0
+
+
+@pytest.mark.parametrize(
+    ("mu0", "message"),
+    [([1.0, 0.5], "increasing"), ([0.0, 1.0], "mu0"), ([1.0], "increasing")],
+)
+def test_bad_grid_raises(mu0: list[float], message: str) -> None:
+    with pytest.raises(ValueError, match=message):
+        study.section2_checks(K_BALL, mu0, Z_FIG4, T)
+
+
+def test_one_job_per_k(tmp_path: Path) -> None:
+    """A dry run of the study plans one study_k job per k of the configuration."""
+    for name in ["Snakefile", "config", "workflow", "scripts", "paper", "src", "profiles"]:
+        src = ROOT / name
+        if src.is_dir():
+            shutil.copytree(src, tmp_path / name, ignore=shutil.ignore_patterns("__pycache__"))
+        elif src.is_file():
+            shutil.copy2(src, tmp_path / name)
+    config = yaml.safe_load((ROOT / "config/config.yaml").read_text())
+    result = subprocess.run(
+        [str(Path(sys.executable).with_name("snakemake")), "-n", "results/study/summary.json"],
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=False,
+    )
+    assert result.returncode == 0, result.stdout + result.stderr
+    counts = dict(line.split() for line in result.stdout.splitlines() if len(line.split()) == 2)
+    assert int(counts["study_k"]) == len(config["study"]["k"])
+    assert int(counts["study"]) == 1
+    for k in config["study"]["k"]:
+        assert f"results/study/k_{k}.json" in result.stdout

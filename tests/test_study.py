@@ -135,8 +135,10 @@ def test_bad_grid_raises(mu0: list[float], message: str) -> None:
         study.section2_checks(K_BALL, mu0, Z_FIG4, T)
 
 
-def test_one_job_per_k(tmp_path: Path) -> None:
-    """A dry run of the study plans one study_k job per k of the configuration."""
+def test_one_job_per_k_with_the_slurm_profile(tmp_path: Path) -> None:
+    """Planning the study with profiles/slurm: one study_k job per k, with the profile's
+    default resources (the executor is swapped for the dry-run one, so no plugin is needed).
+    """
     for name in ["Snakefile", "config", "workflow", "scripts", "paper", "src", "profiles"]:
         src = ROOT / name
         if src.is_dir():
@@ -144,8 +146,12 @@ def test_one_job_per_k(tmp_path: Path) -> None:
         elif src.is_file():
             shutil.copy2(src, tmp_path / name)
     config = yaml.safe_load((ROOT / "config/config.yaml").read_text())
+    profile = yaml.safe_load((ROOT / "profiles/slurm/config.yaml").read_text())
+    assert profile["executor"] == "slurm"
+    snakemake = str(Path(sys.executable).with_name("snakemake"))
+    args = ["--profile", "profiles/slurm", "--executor", "dryrun", "results/study/summary.json"]
     result = subprocess.run(
-        [str(Path(sys.executable).with_name("snakemake")), "-n", "results/study/summary.json"],
+        [snakemake, *args],
         cwd=tmp_path,
         capture_output=True,
         text=True,
@@ -153,8 +159,11 @@ def test_one_job_per_k(tmp_path: Path) -> None:
         check=False,
     )
     assert result.returncode == 0, result.stdout + result.stderr
-    counts = dict(line.split() for line in result.stdout.splitlines() if len(line.split()) == 2)
+    log = result.stdout + result.stderr
+    counts = dict(line.split() for line in log.splitlines() if len(line.split()) == 2)
     assert int(counts["study_k"]) == len(config["study"]["k"])
     assert int(counts["study"]) == 1
     for k in config["study"]["k"]:
-        assert f"results/study/k_{k}.json" in result.stdout
+        assert f"results/study/k_{k}.json" in log
+    runtime = profile["default-resources"]["runtime"]
+    assert log.count(f"runtime={runtime}") == len(config["study"]["k"]) + 1

@@ -1,0 +1,19 @@
+# The figure shown in README.md, docs/fig4_trajectories.png: a copy of the pipeline's own
+# figures/fig4_trajectories.png, refreshed by `make readme-figure` (target readme_figure,
+# not part of the default target, since docs/ is committed). tests/test_readme.py checks
+# that the committed copy has the same bytes as a fresh build of the figure.
+
+
+rule readme_figure:
+    input:
+        "figures/fig4_trajectories.png",
+    output:
+        "docs/fig4_trajectories.png",
+    log:
+        "logs/readme_figure.log",
+    localrule: True
+    run:
+        import shutil
+
+        shutil.copyfile(input[0], output[0])
+        Path(log[0]).write_text(f"copied {input[0]} to {output[0]}\n")

@@ -9,7 +9,7 @@ ball slips with velocity u relative to the plane; the viscous friction there is 
 import matplotlib.pyplot as plt
 import numpy as np
 
-from _style import SINGLE, save, setup
+from _style import SINGLE, save, setup, subplots
 
 setup(snakemake)
 tilt, lift = snakemake.params.tilt, np.sqrt(1.0 - snakemake.params.tilt**2)
@@ -34,7 +34,7 @@ def arrow(ax, a, b, text="", offset=(0.0, 0.0), zorder=2, **kw):
 
 
 # %% the plane, the fixed axes and the rotation of the plane
-fig, ax = plt.subplots(figsize=(SINGLE, 2.2))
+fig, ((ax,),) = subplots(1, 1, (SINGLE, 2.2), margins=(0.0, 0.0, 0.0, 0.0))
 phi = np.linspace(0.0, 2.0 * np.pi, 200)
 ax.fill(*at(3.3 * np.cos(phi), 3.3 * np.sin(phi)), color="0.9", ec="0.5", lw=0.6)
 origin = at(0, 0)

@@ -7,11 +7,10 @@ large-friction expansion (3.2). The dot marks the maximum of alpha1 (a = golden 
 """
 
 # %%
-import matplotlib.pyplot as plt
 import numpy as np
 
 import turntable
-from _style import SINGLE, save, setup
+from _style import SINGLE, save, setup, subplots
 
 setup(snakemake)
 k = snakemake.params.k
@@ -23,7 +22,7 @@ peak = turntable.alpha1_peak(k)
 lo, hi = mu0 < 4.0 * peak.mu0, mu0 > 0.5 * peak.mu0
 
 # %%
-fig, ax = plt.subplots(figsize=(SINGLE, 2.8))
+fig, ((ax,),) = subplots(1, 1, (SINGLE, 2.8), margins=(0.55, 0.1, 0.4, 0.22))
 for y, label, y_large in [
     (s.alpha1, r"$\alpha_1$", large.alpha1),
     (-s.alpha2, r"$|\alpha_2|$", -large.alpha2),

@@ -7,18 +7,17 @@ k = 2/5 by default. After the first period x- is negligible next to x+.
 """
 
 # %%
-import matplotlib.pyplot as plt
 import numpy as np
 
 import turntable
-from _style import DOUBLE, save, setup
+from _style import DOUBLE, save, setup, subplots
 
 setup(snakemake)
 p = snakemake.params
 t = np.linspace(*p.t_span, p.n_points)
 
 # %%
-fig, axes = plt.subplots(1, len(p.mu0), figsize=(DOUBLE, 2.4), sharey=True, squeeze=False)
+fig, axes = subplots(1, len(p.mu0), (DOUBLE, 2.4), (0.55, 0.1, 0.4, 0.22), (0.2, 0.0), sharey=True)
 for ax, mu0 in zip(axes[0], p.mu0, strict=True):
     terms = turntable.modal_terms(p.state, t, mu0, p.k)
     x = turntable.solve(p.state, t, mu0, p.k)[:, 0]

@@ -7,18 +7,17 @@ on a log scale, which grows like e^(alpha1 t) once the transient has died out.
 """
 
 # %%
-import matplotlib.pyplot as plt
 import numpy as np
 
 import turntable
-from _style import DOUBLE, save, setup
+from _style import DOUBLE, save, setup, subplots
 
 setup(snakemake)
 p = snakemake.params
 centre = turntable.spiral_centre(p.state, p.k)
 ncols = 3
 nrows = len(p.mu0) // ncols + 1
-fig, axes = plt.subplots(nrows, ncols, figsize=(DOUBLE, 2.3 * nrows), squeeze=False)
+fig, axes = subplots(nrows, ncols, (DOUBLE, 2.3 * nrows), (0.5, 0.1, 0.4, 0.22), (0.55, 0.6))
 panels, dist_ax = axes.flat[: len(p.mu0)], axes.flat[len(p.mu0)]
 for ax in axes.flat[len(p.mu0) + 1 :]:
     ax.remove()
@@ -35,7 +34,7 @@ for i, (ax, mu0, span) in enumerate(zip(panels, p.mu0, p.t_span, strict=True)):
     ax.set_title(rf"$\mu_0 = {mu0:g}$, $t\Omega \leq {span[1]:g}$, $\alpha_1 = {alpha1:.3f}$")
     dist = np.hypot(*(z[:, :2] - centre).T)
     dist_ax.plot(t, dist, color=f"C{i}", label=rf"$\mu_0 = {mu0:g}$")
-panels[0].legend(loc="lower left", fontsize=6, handletextpad=0.2)
+panels[0].legend(loc="lower right", fontsize=6, handletextpad=0.2)
 dist_ax.set(yscale="log", xlabel=r"time $t\Omega$", ylabel=r"$|\mathbf{r} - \mathbf{r}_0|/R$")
 dist_ax.legend(loc="upper right", fontsize=6)
 save(fig, snakemake)

@@ -7,11 +7,10 @@ over the bound on log axes: it vanishes only as mu0 -> 0.
 """
 
 # %%
-import matplotlib.pyplot as plt
 import numpy as np
 
 import turntable
-from _style import DOUBLE, save, setup
+from _style import DOUBLE, save, setup, subplots
 
 setup(snakemake)
 p = snakemake.params
@@ -19,7 +18,7 @@ mu0 = np.geomspace(*p.mu0_range, p.n_points)
 bound = 2.0 * np.pi / np.log(10.0)  # log10 of e^(2 pi), the infimum of N in (2.10)
 
 # %%
-fig, (ax, ax_ex) = plt.subplots(1, 2, figsize=(DOUBLE, 2.6))
+fig, ((ax, ax_ex),) = subplots(1, 2, (DOUBLE, 2.6), (0.55, 0.1, 0.4, 0.22), (0.75, 0.0))
 for k in p.k:
     log10_n = turntable.log_damping_ratio(mu0, k) / np.log(10.0)
     ax.plot(mu0, log10_n, label=f"$k = {k:.3g}$")

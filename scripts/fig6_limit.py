@@ -9,17 +9,16 @@ state off the no-slip constraint, against time on a log axis, and the no-slip sp
 """
 
 # %%
-import matplotlib.pyplot as plt
 import numpy as np
 
 import turntable
-from _style import DOUBLE, save, setup
+from _style import DOUBLE, save, setup, subplots
 
 setup(snakemake)
 p = snakemake.params
 t = np.linspace(0.0, float(turntable.nonholonomic_period(p.k)), p.n_points)
 t_layer = np.geomspace(*p.layer_t_span, p.n_points)
-fig, axes = plt.subplots(2, 2, figsize=(DOUBLE, 5.0))
+fig, axes = subplots(2, 2, (DOUBLE, 5.0), (0.55, 0.1, 0.4, 0.22), (1.0, 0.65))
 (ax_a, ax_b), (ax_c, ax_d) = axes
 
 # %% (a) paths and (b) position error over one no-slip period

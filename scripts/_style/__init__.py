@@ -1,7 +1,8 @@
-"""Shared set-up of the figure scripts: log redirection, matplotlib style, atomic saving.
+"""Shared set-up of the figure scripts: log redirection, matplotlib style, fixed-margin
+figures, atomic saving.
 
-The figure scripts run under Snakemake's ``script:`` directive and import this package
-after putting ``snakemake.scriptdir`` on ``sys.path``.
+The figure scripts run under Snakemake's ``script:`` directive, which puts the directory
+of the scripts on ``sys.path``, so they import this package as ``_style``.
 """
 
 from __future__ import annotations
@@ -16,6 +17,7 @@ import matplotlib
 matplotlib.use("Agg")
 
 import matplotlib.pyplot as plt
+import numpy as np
 from matplotlib.figure import Figure
 
 STYLE = Path(__file__).with_name("turntable.mplstyle")
@@ -44,6 +46,54 @@ def setup(snakemake: Any) -> None:
     plt.style.use(STYLE)
 
 
+def subplots(
+    nrows: int,
+    ncols: int,
+    size: tuple[float, float],
+    margins: tuple[float, float, float, float] = (0.5, 0.1, 0.4, 0.25),
+    gaps: tuple[float, float] = (0.5, 0.5),
+    **kwargs: Any,
+) -> tuple[Figure, np.ndarray]:
+    """Return a figure of `size` inches with an nrows x ncols grid of axes.
+
+    The margins and gaps are fixed in inches instead of being computed by a layout
+    engine, which would lay out every tick label once more (about 1 s per figure).
+
+    Parameters
+    ----------
+    nrows, ncols : int
+        Shape of the grid of axes.
+    size : (float, float)
+        Width and height of the figure in inches.
+    margins : (float, float, float, float)
+        Space left, right, below and above the grid, in inches.
+    gaps : (float, float)
+        Horizontal and vertical space between neighbouring axes, in inches.
+    **kwargs
+        Passed to `matplotlib.pyplot.subplots` (e.g. ``sharey``).
+
+    Returns
+    -------
+    fig : matplotlib.figure.Figure
+    axes : numpy.ndarray of matplotlib.axes.Axes
+        Always two-dimensional, shape (nrows, ncols).
+    """
+    width, height = size
+    left, right, bottom, top = margins
+    axis_w = (width - left - right - (ncols - 1) * gaps[0]) / ncols
+    axis_h = (height - bottom - top - (nrows - 1) * gaps[1]) / nrows
+    fig, axes = plt.subplots(nrows, ncols, figsize=size, squeeze=False, **kwargs)
+    fig.subplots_adjust(
+        left=left / width,
+        right=1.0 - right / width,
+        bottom=bottom / height,
+        top=1.0 - top / height,
+        wspace=gaps[0] / axis_w,
+        hspace=gaps[1] / axis_h,
+    )
+    return fig, axes
+
+
 def save(fig: Figure, snakemake: Any) -> None:
     """Write `fig` to the ``pdf`` and ``png`` outputs of the rule, each atomically.
 
@@ -58,10 +108,6 @@ def save(fig: Figure, snakemake: Any) -> None:
     snakemake : snakemake.script.Snakemake
         Supplies ``output.pdf``, ``output.png`` and ``params.dpi``.
     """
-    engine = fig.get_layout_engine()
-    if engine is not None:  # lay out once, not again for each file
-        engine.execute(fig)
-        fig.set_layout_engine("none")
     for fmt in ("pdf", "png"):
         path = Path(snakemake.output[fmt])
         tmp = path.with_name(f".{path.name}.partial")

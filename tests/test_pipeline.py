@@ -2,7 +2,7 @@
 
 The workflow runs into temporary directories (``--directory``) with a copy of
 config/config.yaml whose sample counts and PNG resolution are reduced, so that a build
-takes seconds. Two builds are shared by the whole session (and by the xdist workers,
+takes seconds. Two builds are shared by the whole test run (and by the xdist workers,
 through a file lock): a clean one, and one that is killed with SIGKILL after its first
 figure and then resumed.
 """
@@ -43,7 +43,7 @@ OUTPUTS = sorted(f"figures/{name}.{ext}" for name in NAMES for ext in ("pdf", "p
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 
 
-# --------------------------------------------------------------------------- helpers
+# --------------------------------------------------------------------------- utilities
 def base_config() -> dict[str, Any]:
     """The project's configuration cut down: fewer curves and samples, a low PNG resolution.
 
@@ -112,13 +112,13 @@ def sha256(path: Path) -> str:
 
 @pytest.fixture(scope="session")
 def shared_tmp(tmp_path_factory: pytest.TempPathFactory, worker_id: str) -> Path:
-    """A temporary directory shared by all xdist workers of this session."""
+    """A temporary directory shared by all xdist workers of this test run."""
     base = tmp_path_factory.getbasetemp()
     return base if worker_id == "master" else base.parent
 
 
 def build_once(shared: Path, name: str, build: Callable[[Path], dict]) -> tuple[Path, dict]:
-    """Run `build` into shared/name once per session, whichever worker comes first."""
+    """Run `build` into shared/name once per test run, whichever worker comes first."""
     target = shared / f"pipeline-{name}"
     record_file = target / "record.json"
     with open(shared / f"pipeline-{name}.lock", "w") as lock:

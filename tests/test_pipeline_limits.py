@@ -1,4 +1,4 @@
-"""turntable.limits, the helpers behind Figs. 2 and 6, against independent computations.
+"""turntable.limits, the functions behind Figs. 2 and 6, against independent computations.
 
 References: the roots of det(lambda - L) = lambda^2 [(lambda^2 + 2 mu lambda)^2 + mu0^2] / mu^4
 in 50-digit mpmath, solved as lambda = -mu +- sqrt(mu^2 +- i mu0) (no use of a, b of (2.5));

@@ -3,7 +3,7 @@ from pathlib import Path
 
 from snakemake.exceptions import WorkflowError
 
-# Shared plotting helper and matplotlib style: inputs of every figure rule, so that editing
+# Shared plotting module and matplotlib style: inputs of every figure rule, so that editing
 # either rebuilds the figures.
 STYLE_FILES = [
     str(Path(workflow.basedir) / "scripts" / "_style" / "__init__.py"),

@@ -3,45 +3,28 @@
 from __future__ import annotations
 
 import re
-import shutil
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
+from ci_build import ROOT, shared_build
+
 README = (ROOT / "README.md").read_text()
 DOC_FIGURE = ROOT / "docs" / "fig4_trajectories.png"
-COPIED = ["Snakefile", "config", "workflow", "scripts", "paper", "src", "profiles"]
 
 
-@pytest.fixture(scope="module")
-def fresh_fig4(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    """figures/fig4_trajectories.png built by the workflow in a copy of the project."""
-    dest = tmp_path_factory.mktemp("readme")
-    for name in COPIED:
-        src = ROOT / name
-        if src.is_dir():
-            shutil.copytree(src, dest / name, ignore=shutil.ignore_patterns("__pycache__"))
-        elif src.is_file():
-            shutil.copy2(src, dest / name)
-    result = subprocess.run(
-        [str(Path(sys.executable).with_name("snakemake")), "readme_figure", "--cores", "1"],
-        cwd=dest,
-        capture_output=True,
-        text=True,
-        timeout=300,
-        check=False,
-    )
-    assert result.returncode == 0, result.stdout + result.stderr
-    return dest
+@pytest.fixture(scope="session")
+def build(tmp_path_factory: pytest.TempPathFactory, worker_id: str) -> Path:
+    """The shared build of tests/ci_build.py, which ran target readme_figure."""
+    workdir, record = shared_build(tmp_path_factory, worker_id)
+    assert record["build_returncode"] == 0, record["build_log"]
+    return workdir
 
 
-def test_readme_figure_is_the_pipeline_figure(fresh_fig4: Path) -> None:
+def test_readme_figure_is_the_pipeline_figure(build: Path) -> None:
     """docs/fig4_trajectories.png has the bytes of a fresh build (else: make readme-figure)."""
-    built = (fresh_fig4 / "figures" / "fig4_trajectories.png").read_bytes()
-    assert (fresh_fig4 / "docs" / "fig4_trajectories.png").read_bytes() == built
+    built = (build / "figures" / "fig4_trajectories.png").read_bytes()
+    assert (build / "docs" / "fig4_trajectories.png").read_bytes() == built
     assert DOC_FIGURE.read_bytes() == built, "docs/ is stale: run `make readme-figure`"
 
 

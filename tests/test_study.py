@@ -7,9 +7,6 @@ of `section2_checks` is also shown to fail on a deliberately wrong input.
 
 from __future__ import annotations
 
-import shutil
-import subprocess
-import sys
 from pathlib import Path
 
 import mpmath
@@ -18,6 +15,7 @@ import pytest
 import yaml
 
 import turntable.study as study
+from ci_build import job_counts, shared_build
 from reference import K_BALL, exact_roots
 from turntable import Spectrum
 
@@ -135,35 +133,27 @@ def test_bad_grid_raises(mu0: list[float], message: str) -> None:
         study.section2_checks(K_BALL, mu0, Z_FIG4, T)
 
 
-def test_one_job_per_k_with_the_slurm_profile(tmp_path: Path) -> None:
-    """Planning the study with profiles/slurm: one study_k job per k, with the profile's
+def test_one_job_per_k_with_the_slurm_profile(
+    tmp_path_factory: pytest.TempPathFactory, worker_id: str
+) -> None:
+    """Planning the workflow with profiles/slurm: one study_k job per k, with the profile's
     default resources (the executor is swapped for the dry-run one, so no plugin is needed).
     """
-    for name in ["Snakefile", "config", "workflow", "scripts", "paper", "src", "profiles"]:
-        src = ROOT / name
-        if src.is_dir():
-            shutil.copytree(src, tmp_path / name, ignore=shutil.ignore_patterns("__pycache__"))
-        elif src.is_file():
-            shutil.copy2(src, tmp_path / name)
+    _, record = shared_build(tmp_path_factory, worker_id)
+    plan = record["plan"]
+    assert record["plan_returncode"] == 0, plan
     config = yaml.safe_load((ROOT / "config/config.yaml").read_text())
     profile = yaml.safe_load((ROOT / "profiles/slurm/config.yaml").read_text())
     assert profile["executor"] == "slurm"
-    snakemake = str(Path(sys.executable).with_name("snakemake"))
-    args = ["--profile", "profiles/slurm", "--executor", "dryrun", "results/study/summary.json"]
-    result = subprocess.run(
-        [snakemake, *args],
-        cwd=tmp_path,
-        capture_output=True,
-        text=True,
-        timeout=120,
-        check=False,
-    )
-    assert result.returncode == 0, result.stdout + result.stderr
-    log = result.stdout + result.stderr
-    counts = dict(line.split() for line in log.splitlines() if len(line.split()) == 2)
-    assert int(counts["study_k"]) == len(config["study"]["k"])
-    assert int(counts["study"]) == 1
+    counts = job_counts(plan)
+    assert counts["study_k"] == len(config["study"]["k"])
+    assert counts["study"] == 1
     for k in config["study"]["k"]:
-        assert f"results/study/k_{k}.json" in log
+        assert f"results/study/k_{k}.json" in plan
+    jobs = plan.split("\nrule ")[1:]
+    study_jobs = [job for job in jobs if job.startswith("study_k:")]
+    assert len(study_jobs) == len(config["study"]["k"])
     runtime = profile["default-resources"]["runtime"]
-    assert log.count(f"runtime={runtime}") == len(config["study"]["k"]) + 1
+    assert all(f"runtime={runtime}," in job for job in study_jobs)
+    notebook_runtime = profile["set-resources"]["notebook"]["runtime"]
+    assert all(f"runtime={notebook_runtime}," in j for j in jobs if j.startswith("notebook:"))

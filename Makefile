@@ -38,8 +38,8 @@ test: $(STAMP)
 	$(BIN)/python -m pytest -n 2
 
 lint: $(STAMP)
-	$(BIN)/ruff check src tests benchmarks scripts
-	$(BIN)/ruff format --check src tests benchmarks scripts
+	$(BIN)/ruff check src tests benchmarks scripts workflow
+	$(BIN)/ruff format --check src tests benchmarks scripts workflow
 	$(BIN)/snakefmt --check .
 	$(BIN)/snakemake --lint
 

@@ -24,7 +24,6 @@ OUTPUTS = [f"figures/{n}.{ext}" for n in FIGURES for ext in ("pdf", "png")] + [
     "results/claims.md",
     "paper/paper.pdf",
     "results/report.html",
-    "results/study/summary.json",
     "results/notebooks/fig1_schematic.ipynb",
     "results/notebooks/claims_report.ipynb",
 ]
@@ -58,6 +57,9 @@ def checkout(tmp_path: Path) -> Path:
     claims = {"claims": {"a.b": {"verdict": "confirmed"}, "c.d": {"verdict": "refined"}}}
     claims["summary"] = {"confirmed": 1, "refined": 1, "failed": 0, "total": 2}
     (repo / "results/claims.json").write_text(json.dumps(claims))
+    study = {"all_passed": True, "failed": [], "per_k": [{"k": 0.4}]}
+    (repo / "results/study").mkdir(parents=True)
+    (repo / "results/study/summary.json").write_text(json.dumps(study))
     return repo
 
 
@@ -89,6 +91,14 @@ def test_fails_on_a_failed_claim(checkout: Path) -> None:
     assert "c.d" in result.stderr
 
 
+def test_fails_on_a_failed_study_check(checkout: Path) -> None:
+    study = {"all_passed": False, "failed": ["k=0.4: roots"], "per_k": [{"k": 0.4}]}
+    (checkout / "results/study/summary.json").write_text(json.dumps(study))
+    result = _check(checkout)
+    assert result.returncode == 1
+    assert "k=0.4: roots" in result.stderr
+
+
 @pytest.mark.parametrize(
     "missing",
     [
@@ -97,6 +107,7 @@ def test_fails_on_a_failed_claim(checkout: Path) -> None:
         "results/report.html",
         "results/notebooks/claims_report.ipynb",
         "results/claims.json",
+        "results/study/summary.json",
     ],
 )
 def test_fails_on_a_missing_output(checkout: Path, missing: str) -> None:

@@ -120,12 +120,17 @@ def newton_euler(
 
     y0 = np.array([z0[0], z0[1], 1.0, z0[2], z0[3], 0.0, z0[4], z0[5], wz0])
     sol = solve_ivp(
-        rhs, (0.0, max(float(t[-1]), 1e-300)), y0, method=method,
-        t_eval=t, rtol=rtol, atol=atol,
+        rhs,
+        (0.0, max(float(t[-1]), 1e-300)),
+        y0,
+        method=method,
+        t_eval=t,
+        rtol=rtol,
+        atol=atol,
     )
     if not sol.success:
         raise RuntimeError(f"solve_ivp failed: {sol.message}")
     y = sol.y.T
     r, v, w = y[:, 0:3], y[:, 3:6], y[:, 6:9]
-    normal = np.array([normal_force(*row) for row in zip(r, v, w)])
+    normal = g + mu0 * (_slip(r, v, w) @ GAMMA)
     return NewtonEulerResult(sol.t, r, v, w, normal)

@@ -162,17 +162,30 @@ def solve(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> NDArray[np.float
     # no overflow (the decaying mode may underflow to 0), real functions only.
     q = -(c.v0 - c.lp * c.rho0) / d
     qv = -(c.lm * c.v0 + 1j * c.mu0 * c.rho0) / d
-    bt = c.lp.imag * t
-    with np.errstate(under="ignore"):
-        em1 = np.expm1(-d.real * t)
-    basis = np.empty((5, t.size))
+    coef = _solution_matrix(c.rc, c.rho0, q, c.v0, qv, c.k)
+    out = np.empty((t.size, 6))
+    # Work in blocks so that the temporaries stay small (cache-resident and
+    # reused by the allocator); only the result is a large fresh array.
+    basis = np.empty((5, min(t.size, _BLOCK)))
     basis[0] = 1.0
-    growth = np.exp(c.lp.real * t)
-    np.multiply(growth, np.cos(bt), out=basis[1])  # Re E
-    np.multiply(growth, np.sin(bt), out=basis[2])  # Im E
-    np.multiply(basis[1], em1, out=basis[3])  # Re E X
-    np.multiply(basis[2], em1 + 2.0, out=basis[4])  # -Im E X
-    return basis.T @ _solution_matrix(c.rc, c.rho0, q, c.v0, qv, c.k)
+    for start in range(0, t.size, _BLOCK):
+        tb = t[start : start + _BLOCK]
+        b = basis[:, : tb.size]
+        bt = c.lp.imag * tb
+        with np.errstate(under="ignore"):
+            em1 = np.expm1(-d.real * tb)
+        growth = np.exp(c.lp.real * tb)
+        np.multiply(growth, np.cos(bt), out=b[1])  # Re E
+        np.multiply(growth, np.sin(bt), out=b[2])  # Im E
+        np.multiply(b[1], em1, out=b[3])  # Re E X
+        em1 += 2.0
+        np.multiply(b[2], em1, out=b[4])  # -Im E X
+        np.matmul(b.T, coef, out=out[start : start + tb.size])
+    return out
+
+
+#: Number of time points evaluated at once by `solve`.
+_BLOCK = 2048
 
 
 def _solution_matrix(

@@ -165,7 +165,7 @@ def eigenvalues(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.complex128]:
     mu0, k > 0 (see ``benchmarks/``).
     """
     s = spectrum(mu0, k)
-    out = np.empty(s.alpha1.shape + (4,), dtype=complex)
+    out = np.empty((*s.alpha1.shape, 4), dtype=complex)
     out[..., 0] = s.alpha1 + 1j * s.beta
     out[..., 1] = s.alpha1 - 1j * s.beta
     out[..., 2] = s.alpha2 + 1j * s.beta

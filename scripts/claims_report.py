@@ -5,6 +5,7 @@ of config/config.yaml.
 """
 
 import logging
+from pathlib import Path
 
 from turntable.claims.report import git_commit, write_reports
 
@@ -14,7 +15,7 @@ report = write_reports(
     snakemake.output.json,
     snakemake.output.md,
     dict(snakemake.params.claims),
-    commit=git_commit(snakemake.params.repo),
+    commit=git_commit(Path(snakemake.scriptdir).parent),
 )
 logging.info("claims: %s", report["summary"])
 for cid in report["order"]:

@@ -16,8 +16,9 @@ rule claims:
         md="results/claims.md",
     log:
         "logs/claims.log",
+    conda:
+        "../envs/turntable.yaml"
     params:
         claims=config["claims"],
-        repo=workflow.basedir,
     script:
         "../../scripts/claims_report.py"

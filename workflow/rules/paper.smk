@@ -18,6 +18,8 @@ rule paper:
         "paper/paper.pdf",
     log:
         "logs/paper.log",
+    conda:
+        "../envs/turntable.yaml"
     params:
         main="paper.typ",
         timestamp=config["paper"]["timestamp"],

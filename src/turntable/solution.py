@@ -252,12 +252,13 @@ def modal_terms(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> ModalTerms
     t = _validate.times("t", t)
     c = _coefficients(z0, mu0, k)
     d = c.lp - c.lm
+    centre = _real_state(np.full(t.shape, c.rc), np.zeros(t.shape), np.full(t.shape, c.rc))
+    # The decaying mode underflows to 0 for large mu0 t: harmless.
     with np.errstate(under="ignore"):
         amp_p = (c.v0 - c.lm * c.rho0) / d * np.exp(c.lp * t)
         amp_m = (c.lp * c.rho0 - c.v0) / d * np.exp(c.lm * t)
-    centre = _real_state(np.full(t.shape, c.rc), np.zeros(t.shape), np.full(t.shape, c.rc))
-    plus = _real_state(amp_p, c.lp * amp_p, -1j * c.lp * amp_p / c.k)
-    minus = _real_state(amp_m, c.lm * amp_m, -1j * c.lm * amp_m / c.k)
+        plus = _real_state(amp_p, c.lp * amp_p, -1j * c.lp * amp_p / c.k)
+        minus = _real_state(amp_m, c.lm * amp_m, -1j * c.lm * amp_m / c.k)
     return ModalTerms(centre, plus, minus)
 
 

@@ -13,7 +13,6 @@ into ``results/benchmarks.json`` under the key ``pipeline`` (other keys are kept
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import platform
 import resource
@@ -27,6 +26,9 @@ import time
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from results_file import merge_results
 
 ROOT = Path(__file__).resolve().parents[1]
 SNAKEMAKE = str(Path(sys.executable).with_name("snakemake"))
@@ -71,22 +73,6 @@ def one_repeat(cores: int) -> dict[str, float]:
     }
 
 
-def write_results(path: Path, key: str, value: Any) -> None:
-    """Set ``data[key] = value`` in the JSON file at `path` atomically, keeping other keys."""
-    data: dict[str, Any] = json.loads(path.read_text()) if path.exists() else {}
-    data[key] = value
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "w") as fh:
-            json.dump(data, fh, indent=2, allow_nan=False)
-            fh.write("\n")
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-
-
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the benchmark, print a summary and merge it into the JSON file."""
     argv = list(sys.argv[1:] if argv is None else argv)
@@ -116,7 +102,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             f"(target < {TARGETS[name]} s); CPU min {cpu['min']:6.2f} s"
         )
     out = ROOT / args.out  # an absolute --out replaces ROOT
-    write_results(out, "pipeline", result)
+    merge_results(out, {"pipeline": result})
     print(f"wrote {out}")
     return 0
 

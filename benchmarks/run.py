@@ -25,13 +25,11 @@ JSON file given by ``--out`` (other top-level keys in it are kept).
 from __future__ import annotations
 
 import argparse
-import json
 import math
 import os
 import platform
 import shlex
 import sys
-import tempfile
 import timeit
 import warnings
 from collections.abc import Callable, Sequence
@@ -55,6 +53,9 @@ import scipy.linalg  # noqa: E402
 from numpy.typing import NDArray  # noqa: E402
 
 import turntable as tt  # noqa: E402
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from results_file import merge_results  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 SECTIONS = ("eigenvalues", "solution", "speed")
@@ -798,21 +799,7 @@ def meta() -> dict[str, str]:
 
 def write_results(path: Path, sections: dict[str, Any]) -> None:
     """Merge ``sections`` into the JSON file at ``path`` (atomically), keeping other keys."""
-    data: dict[str, Any] = {}
-    if path.exists():
-        with path.open() as fh:
-            data = json.load(fh)
-    data.update(sections)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "w") as fh:
-            json.dump(data, fh, indent=2, allow_nan=False)
-            fh.write("\n")
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    merge_results(path, sections)
 
 
 def main(argv: Sequence[str] | None = None) -> int:

@@ -1,0 +1,34 @@
+"""The shared results file ``results/benchmarks.json``: each benchmark owns some keys.
+
+Used by ``benchmarks/run.py``, ``benchmarks/pipeline.py`` and ``.ci/run``.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+from pathlib import Path
+from typing import Any
+
+
+def merge_results(path: Path, sections: dict[str, Any]) -> None:
+    """Set the top-level keys of ``sections`` in the JSON file at ``path``, keeping the others.
+
+    The file is replaced atomically (a temporary file in the same folder, then a rename)
+    and is readable by everyone, like any other output.
+    """
+    path = Path(path)
+    data: dict[str, Any] = json.loads(path.read_text()) if path.exists() else {}
+    data.update(sections)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    try:
+        with os.fdopen(fd, "w") as fh:
+            json.dump(data, fh, indent=2, allow_nan=False)
+            fh.write("\n")
+        os.chmod(tmp, 0o644)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise

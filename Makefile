@@ -7,7 +7,7 @@ BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 CORES ?= all
 
-.PHONY: all setup test lint bench lock clean notebooks report readme-figure
+.PHONY: all setup test lint bench mutants lock clean notebooks report readme-figure
 
 all: $(STAMP)
 	$(BIN)/snakemake --cores $(CORES)
@@ -42,6 +42,11 @@ lint: $(STAMP)
 	$(BIN)/ruff format --check src tests benchmarks scripts workflow
 	$(BIN)/snakefmt --check .
 	$(BIN)/snakemake --lint
+
+# Break the physics on purpose (a sign in L, k/(k+1), the sign in y0, ...) and check
+# that the test suite catches every such mutant.
+mutants: $(STAMP)
+	$(BIN)/python tools/mutants.py
 
 bench: $(STAMP)
 	$(BIN)/python benchmarks/run.py

@@ -2,8 +2,8 @@
 
 References: spectral projectors from numpy's eigendecomposition of the sympy
 matrix L, the matrix exponential of that matrix (scipy), roots of the
-characteristic polynomial at 60 digits (mpmath), and the numbers printed in
-the paper (reference table of the notes).
+characteristic polynomial at 60 digits (mpmath), and the reference table of
+the project's notes (values re-derived at high precision; the paper does not print them).
 """
 
 from __future__ import annotations
@@ -240,7 +240,8 @@ def test_decaying_term_falls_by_n_per_period(mu0: float, k: float) -> None:
     assert_allclose(log_ratio, tt.log_damping_ratio(mu0, k), rtol=1e-12)
 
 
-# Reference table of the notes (k = 2/5), as printed: (mu0, alpha1, alpha2, beta, log10 N).
+# Reference table of the project's notes (k = 2/5, re-derived at high precision), with the
+# digits given there: (mu0, alpha1, alpha2, beta, log10 N).
 TABLE = [
     pytest.param(0.1, "0.0850090103", "-0.4350090103", "0.1923010281", "6.1728", id="mu0=0.1"),
     pytest.param(1.0, "0.0225872323", "-3.5225872323", "0.2820735651", "34.077", id="mu0=1"),
@@ -248,20 +249,20 @@ TABLE = [
 ]
 
 
-def _check_printed(value: float, printed: str) -> None:
-    """Assert that value rounds to the printed decimal (half a unit in its last place)."""
-    decimals = len(printed.split(".")[1])
-    assert_allclose(value, float(printed), rtol=0, atol=0.5 * 10.0**-decimals)
+def _check_rounded(value: float, table: str) -> None:
+    """Assert that value rounds to the table's decimal (half a unit in its last place)."""
+    decimals = len(table.split(".")[1])
+    assert_allclose(value, float(table), rtol=0, atol=0.5 * 10.0**-decimals)
 
 
 @pytest.mark.parametrize(("mu0", "alpha1", "alpha2", "beta", "log10_n"), TABLE)
 def test_reference_table(mu0: float, alpha1: str, alpha2: str, beta: str, log10_n: str) -> None:
-    """solution.damping_ratio and spectrum.roots: the printed values at k = 2/5."""
+    """solution.damping_ratio and spectrum.roots: the reference table at k = 2/5."""
     s = tt.spectrum(mu0, K_BALL)
-    _check_printed(s.alpha1, alpha1)
-    _check_printed(s.alpha2, alpha2)
-    _check_printed(s.beta, beta)
-    _check_printed(tt.log_damping_ratio(mu0, K_BALL) / np.log(10.0), log10_n)
+    _check_rounded(s.alpha1, alpha1)
+    _check_rounded(s.alpha2, alpha2)
+    _check_rounded(s.beta, beta)
+    _check_rounded(tt.log_damping_ratio(mu0, K_BALL) / np.log(10.0), log10_n)
 
 
 # --- conserved quantities -------------------------------------------------------------

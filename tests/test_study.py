@@ -1,7 +1,8 @@
 """The parameter study: turntable.study and rules study_k / study (workflow/rules/study.smk).
 
 Expected values come from the high-precision roots of the characteristic polynomial
-(tests/reference.py, sympy + mpmath) and from the values printed in the paper; each check
+(tests/reference.py, sympy + mpmath) and from the reference table of the project's notes
+(values re-derived at high precision, not printed in the paper); each check
 of `section2_checks` is also shown to fail on a deliberately wrong input.
 """
 
@@ -57,8 +58,8 @@ def test_values_match_high_precision_roots(ball: dict, i: int) -> None:
     assert ball["decay_ratio"][i] == pytest.approx(abs(alpha2) / beta, rel=1e-12)
 
 
-def test_printed_reference_values() -> None:
-    """The paper's values at k = 2/5 for mu0 = 0.1, 1, 10 (10 digits)."""
+def test_reference_table_values() -> None:
+    """The reference table at k = 2/5 for mu0 = 0.1, 1, 10 (10 digits)."""
     r = study.section2_checks(K_BALL, [0.1, 1.0, 10.0], Z_FIG4, T)
     np.testing.assert_allclose(r["alpha1"], [0.0850090103, 0.0225872323, 0.00233158482], 1e-8)
     np.testing.assert_allclose(r["alpha2"], [-0.4350090103, -3.5225872323, -35.0023315848], 1e-9)

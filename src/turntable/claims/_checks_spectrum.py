@@ -21,13 +21,26 @@ def _state_scale(z: np.ndarray) -> float:
 #: Vertical spin and dimensionless gravity g/(R Omega^2) of the three-dimensional runs.
 SPIN, GRAVITY = 0.7, 9.81
 
+#: Integrator of the three-dimensional runs (`scipy.integrate.solve_ivp` method and tolerances).
+NE_METHOD, NE_RTOL, NE_ATOL = "LSODA", 1e-12, 1e-12
+
 
 @functools.lru_cache(maxsize=32)
 def _newton_euler(
     z0: tuple[float, ...], mu0: float, k: float, t_end: float, wz0: float, g: float
 ) -> tt.NewtonEulerResult:
     """`turntable.newton_euler` on 9 equally spaced times, cached between checks."""
-    return tt.newton_euler(np.array(z0), np.linspace(0.0, t_end, 9), mu0, k, wz0=wz0, g=g)
+    return tt.newton_euler(
+        np.array(z0),
+        np.linspace(0.0, t_end, 9),
+        mu0,
+        k,
+        wz0=wz0,
+        g=g,
+        method=NE_METHOD,
+        rtol=NE_RTOL,
+        atol=NE_ATOL,
+    )
 
 
 @register(
@@ -41,9 +54,11 @@ def _newton_euler(
     paper_value={"text": "N = g, vz = 0, wz constant; k = 2/5 for a homogeneous ball", "k": 0.4},
     method=(
         "Integrate the full three-dimensional Newton-Euler equations (cross products, no use "
-        "of L) with DOP853 at rtol 1e-11 from a slipping state with nonzero vertical spin, and "
-        "compare with exp(L t) z0 for the package's L; also compare the package's L with the "
-        "Jacobian of (1.6) built column by column, and record vz, N - g and the drift of wz."
+        f"of L) with {NE_METHOD} at rtol = atol = {NE_RTOL:g} from a slipping state with "
+        "nonzero vertical spin, and compare the planar state with exp(L t) z0 for the "
+        "package's L; also compare the package's L with the Jacobian of (1.6) built column by "
+        "column. vz, N - g and the drift of wz are recorded, not tested: they vanish by "
+        "construction of the three-dimensional equations."
     ),
 )
 def _model_reduction(p: dict[str, Any]) -> Outcome:
@@ -61,23 +76,18 @@ def _model_reduction(p: dict[str, Any]) -> Outcome:
         normal.append(np.abs(ne.normal - g).max() / g)
         wz.append(np.abs(ne.w[:, 2] - wz0).max())
         matrix_err.append(np.abs(big - ref.matrix_from_equations(mu0, k)).max() / (mu0 / k))
-    tol = {"state_rel": 1e-7, "vz": 1e-9, "normal_rel": 1e-9, "wz": 1e-9, "matrix_rel": 1e-15}
-    ok = (
-        max(state_err) <= tol["state_rel"]
-        and max(vz) <= tol["vz"]
-        and max(normal) <= tol["normal_rel"]
-        and max(wz) <= tol["wz"]
-        and max(matrix_err) <= tol["matrix_rel"]
-    )
+    tol = {"state_rel": 1e-7, "matrix_rel": 1e-15}
+    ok = max(state_err) <= tol["state_rel"] and max(matrix_err) <= tol["matrix_rel"]
     reproduced = {
         "k_values": p["k_values"],
         "mu0": mu0,
         "t_end": t_end,
+        "integrator": {"method": NE_METHOD, "rtol": NE_RTOL, "atol": NE_ATOL},
         "max_state_error_rel": max(state_err),
-        "max_abs_vz": max(vz),
-        "max_normal_minus_g_rel": max(normal),
-        "max_wz_drift": max(wz),
         "max_matrix_difference_rel": max(matrix_err),
+        "identity_max_abs_vz": max(vz),
+        "identity_max_normal_minus_g_rel": max(normal),
+        "identity_max_wz_drift": max(wz),
     }
     return Outcome(
         verdict="confirmed" if ok else "failed",
@@ -85,11 +95,17 @@ def _model_reduction(p: dict[str, Any]) -> Outcome:
         tolerance=tol,
         summary=(
             f"3-D vs reduced: max rel. error {sig(max(state_err), 2)}; "
-            f"max |vz| = {sig(max(vz), 2)}; max |N/g - 1| = {sig(max(normal), 2)}"
+            f"L vs Jacobian of (1.6): {sig(max(matrix_err), 2)}"
         ),
         evidence=(
-            "The three-dimensional integration agrees with the linear system to the "
-            "integrator's tolerance for every k tried, and L equals the Jacobian of (1.6)."
+            "N = g, vz = 0 and constant wz are identities of the model, not numerical "
+            "findings: the reaction N = g + mu0 u.gamma that keeps contact cancels the "
+            "vertical force, so vz keeps its initial value 0; then u.gamma = vz = 0, the "
+            "friction -mu0 u has no vertical component and N = g; and gamma x u is "
+            "horizontal, so the friction exerts no torque about the vertical and wz stays "
+            "constant. What is tested: the planar part of the three-dimensional "
+            "integration agrees with exp(L t) z0 to the integrator's tolerance for every k "
+            "tried, and L equals the Jacobian of (1.6)."
             if ok
             else "The three-dimensional equations and the linear system disagree."
         ),
@@ -132,7 +148,12 @@ def _model_rubber_ball(p: dict[str, Any]) -> Outcome:
         tolerance=tol,
         summary=f"spin 0 vs {sig(SPIN)}: max rel. planar difference {sig(max(diff), 2)}",
         evidence=(
-            "The planar motion does not depend on the vertical spin."
+            "In the three-dimensional equations as integrated, wz enters only through "
+            "gamma x w in the slip velocity u = v + gamma x w - gamma x r, and gamma x w does "
+            "not involve wz, so the planar motion cannot depend on it and the difference is "
+            "exactly 0; the integration confirms that the three-dimensional "
+            "equations as coded do not feed wz into the planar motion, and wz stays 0 for "
+            "the rubber ball."
             if ok
             else "The planar motion depends on the vertical spin."
         ),
@@ -265,7 +286,8 @@ REFERENCE_TABLE = {
         "Compute the eigenvalues of L with mpmath at 40 digits (QR algorithm, no closed form); "
         "evaluate the printed closed forms (2.5) at 40 digits and the package's float form, "
         "and compare both with them over the mu0 probes and every k; compare with the "
-        "tabulated high-precision values at k = 2/5."
+        "reference table of the project's notes (high-precision values at k = 2/5, not "
+        "printed in the paper)."
     ),
 )
 def _roots(p: dict[str, Any]) -> Outcome:
@@ -381,8 +403,8 @@ def _unstable_focus(p: dict[str, Any]) -> Outcome:
         tolerance={"alpha1_min_above": 0.0, "alpha2_max_below": 0.0},
         summary=f"min alpha1 = {sig(min_a1, 3)} > 0 > max alpha2 = {sig(max_a2, 3)}",
         evidence=(
-            "The signs hold on the whole grid and for every k; alpha1 tends to 0 only as "
-            "mu0 tends to 0 or infinity."
+            "The signs hold on the whole grid for every k tried, and at the probes with "
+            "40-digit eigenvalues."
             if ok
             else "A sign of alpha1 or alpha2 is wrong somewhere on the grid."
         ),
@@ -449,7 +471,7 @@ def _alpha1_peak(p: dict[str, Any]) -> Outcome:
         ),
         evidence=(
             "The numerical maximiser of alpha1 agrees with the golden-ratio closed form for "
-            "every k."
+            "every k tried."
             if ok
             else "The maximiser of alpha1 is not where the closed form puts it."
         ),

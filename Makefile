@@ -9,9 +9,15 @@ CORES ?= all
 
 .PHONY: all setup test lint bench mutants lock clean notebooks report readme-figure
 
+# The HTML report is rewritten only when an output it shows is newer than it, so that a
+# second `make` does nothing.
+REPORT := if [ ! -f results/report.html ] || [ -n "$$(find figures results/study \
+	results/claims.json -newer results/report.html -print -quit 2>/dev/null)" ]; then \
+	$(BIN)/snakemake --report results/report.html; else echo "results/report.html is up to date"; fi
+
 all: $(STAMP)
 	$(BIN)/snakemake --cores $(CORES)
-	$(BIN)/snakemake --report results/report.html
+	@$(REPORT)
 
 # Every script of scripts/ executed as a notebook with its outputs: results/notebooks/.
 notebooks: $(STAMP)
@@ -20,7 +26,7 @@ notebooks: $(STAMP)
 # Self-contained HTML page with every figure and its caption (needs the built figures).
 report: $(STAMP)
 	$(BIN)/snakemake --cores $(CORES)
-	$(BIN)/snakemake --report results/report.html
+	@$(REPORT)
 
 # Refresh the figure shown in README.md (docs/fig4_trajectories.png).
 readme-figure: $(STAMP)

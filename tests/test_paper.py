@@ -4,16 +4,23 @@ come from.
 Every number of the article must be read from results/claims.json.  The source is parsed
 here, without compiling it: math, code (including strings and figure paths), raw text,
 comments, references and labels are removed, content blocks inside code (captions, table
-cells) are kept, and what remains must not contain a digit.  When the inputs exist, the
-article is also compiled twice to check that the PDF is reproducible.
+cells) are kept, and what remains must not contain a digit.  The article is also
+compiled twice, from the figures of the pipeline test's build and a fresh claims report, to
+check that the PDF is reproducible and carries the report.
 """
 
 from __future__ import annotations
 
 import re
+import shutil
 from pathlib import Path
 
 import pytest
+import yaml
+
+# The clean build of the figure workflow, shared with tests/test_pipeline.py.
+from test_pipeline import clean_build, shared_tmp  # noqa: F401
+from turntable.claims.report import write_reports
 
 ROOT = Path(__file__).resolve().parents[1]
 PAPER = ROOT / "paper" / "paper.typ"
@@ -257,25 +264,33 @@ def test_numbers_come_from_the_claims_report() -> None:
     assert used <= set(claims.claim_ids())
 
 
-# Compilation (only when the workflow has produced its inputs) ---------------------------
+# Compilation ------------------------------------------------------------------------------
 
 
-def _inputs_missing() -> list[str]:
-    text = PAPER.read_text(encoding="utf-8")
-    paths = [ROOT / "results" / "claims.json"]
-    paths += [ROOT / "paper" / p for p, _ in _figures(text)]
-    return [str(p) for p in paths if not p.exists()]
+@pytest.fixture(scope="module")
+def paper_tree(clean_build: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:  # noqa: F811
+    """A project tree holding what the article reads: the figures of the pipeline test's
+    clean build, the claims report of the project's configuration, the article's sources."""
+    tree = tmp_path_factory.mktemp("paper-tree")
+    shutil.copytree(clean_build / "figures", tree / "figures")
+    shutil.copytree(ROOT / "paper", tree / "paper", ignore=shutil.ignore_patterns("*.pdf"))
+    config = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())
+    write_reports(
+        tree / "results" / "claims.json", tree / "results" / "claims.md", config["claims"]
+    )
+    return tree
 
 
-def test_pdf_is_reproducible_and_carries_the_report() -> None:
-    missing = _inputs_missing()
-    if missing:
-        pytest.skip(f"run the workflow first (snakemake): missing {missing}")
+def test_pdf_is_reproducible_and_carries_the_report(paper_tree: Path) -> None:
     import typst
 
     def build() -> bytes:
         return typst.compile(
-            str(PAPER), root=str(ROOT), format="pdf", ignore_system_fonts=True, timestamp=0
+            str(paper_tree / "paper" / "paper.typ"),
+            root=str(paper_tree),
+            format="pdf",
+            ignore_system_fonts=True,
+            timestamp=0,
         )
 
     first, second = build(), build()

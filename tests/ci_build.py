@@ -10,8 +10,6 @@ the other workers wait for that build and reuse it.
 
 from __future__ import annotations
 
-import fcntl
-import json
 import shutil
 import subprocess
 import sys
@@ -19,6 +17,8 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+
+from shared_build import build_once, shared_dir
 
 ROOT = Path(__file__).resolve().parents[1]
 SNAKEMAKE = str(Path(sys.executable).with_name("snakemake"))
@@ -82,17 +82,7 @@ def _build(workdir: Path) -> dict[str, Any]:
 
 def shared_build(tmp_path_factory: pytest.TempPathFactory, worker_id: str) -> tuple[Path, dict]:
     """The shared project directory and the record of its plan and build."""
-    base = tmp_path_factory.getbasetemp()
-    shared = base if worker_id == "master" else base.parent
-    target = shared / "ci-build"
-    record_file = shared / "ci-build.json"
-    with open(shared / "ci-build.lock", "w") as lock:
-        fcntl.flock(lock, fcntl.LOCK_EX)
-        if not record_file.exists():
-            shutil.rmtree(target, ignore_errors=True)
-            shutil.rmtree(target.with_name(target.name + "-plan"), ignore_errors=True)
-            record_file.write_text(json.dumps(_build(target)))
-    return target, json.loads(record_file.read_text())
+    return build_once(shared_dir(tmp_path_factory, worker_id), "ci-build", _build)
 
 
 def job_counts(plan: str) -> dict[str, int]:

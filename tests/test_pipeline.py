@@ -9,9 +9,7 @@ figure and then resumed.
 
 from __future__ import annotations
 
-import fcntl
 import hashlib
-import json
 import os
 import re
 import shutil
@@ -28,6 +26,8 @@ from typing import Any
 import matplotlib.image
 import pytest
 import yaml
+
+from shared_build import build_once, shared_dir
 
 ROOT = Path(__file__).resolve().parents[1]
 SNAKEMAKE = str(Path(sys.executable).with_name("snakemake"))
@@ -113,22 +113,7 @@ def sha256(path: Path) -> str:
 @pytest.fixture(scope="session")
 def shared_tmp(tmp_path_factory: pytest.TempPathFactory, worker_id: str) -> Path:
     """A temporary directory shared by all xdist workers of this test run."""
-    base = tmp_path_factory.getbasetemp()
-    return base if worker_id == "master" else base.parent
-
-
-def build_once(shared: Path, name: str, build: Callable[[Path], dict]) -> tuple[Path, dict]:
-    """Run `build` into shared/name once per test run, whichever worker comes first."""
-    target = shared / f"pipeline-{name}"
-    record_file = target / "record.json"
-    with open(shared / f"pipeline-{name}.lock", "w") as lock:
-        fcntl.flock(lock, fcntl.LOCK_EX)
-        if not record_file.exists():
-            shutil.rmtree(target, ignore_errors=True)
-            target.mkdir(parents=True)
-            record = build(target)
-            record_file.write_text(json.dumps(record))
-    return target, json.loads(record_file.read_text())
+    return shared_dir(tmp_path_factory, worker_id)
 
 
 def _clean_build(workdir: Path) -> dict:
@@ -182,14 +167,14 @@ def _interrupted_build(workdir: Path) -> dict:
 
 @pytest.fixture(scope="session")
 def clean_build(shared_tmp: Path) -> Path:
-    workdir, record = build_once(shared_tmp, "clean", _clean_build)
+    workdir, record = build_once(shared_tmp, "pipeline-clean", _clean_build)
     assert record["returncode"] == 0, record["log"]
     return workdir
 
 
 @pytest.fixture(scope="session")
 def interrupted_build(shared_tmp: Path) -> tuple[Path, dict]:
-    return build_once(shared_tmp, "interrupted", _interrupted_build)
+    return build_once(shared_tmp, "pipeline-interrupted", _interrupted_build)
 
 
 # --------------------------------------------------------------------------- a full build

@@ -8,6 +8,7 @@ numbers with no overflow, invalid operation or division by zero.
 from __future__ import annotations
 
 import inspect
+import re
 from collections.abc import Callable
 from typing import Any
 
@@ -36,6 +37,19 @@ PUBLIC: list[Callable[..., Any]] = [
     tt.slip_velocity,
     tt.nonholonomic,
     tt.newton_euler,
+    tt.max_time,
+    tt.limit_error,
+    tt.small_friction_expansion,
+    tt.nonholonomic_period,
+]
+
+#: Functions of states (as opposed to an initial state of a trajectory): they accept
+#: any array whose last axis has length 6, as `conserved` does.
+OF_STATES: list[Callable[..., Any]] = [
+    tt.conserved,
+    tt.spiral_centre,
+    tt.slip_velocity,
+    tt.no_slip_state,
 ]
 
 BAD: dict[str, list[Any]] = {
@@ -46,6 +60,8 @@ BAD: dict[str, list[Any]] = {
         pytest.param(np.inf, id="inf"),
         pytest.param("abc", id="str"),
         pytest.param(None, id="None"),
+        pytest.param(1.0 + 0.0j, id="complex"),
+        pytest.param(1.0 + 1.0j, id="complex-imag"),
     ],
     "z0": [
         pytest.param(np.ones(5), id="len5"),
@@ -54,6 +70,8 @@ BAD: dict[str, list[Any]] = {
         pytest.param(np.array([1.0, np.nan, 0, 0, 0, 0]), id="nan"),
         pytest.param(np.array([1.0, np.inf, 0, 0, 0, 0]), id="inf"),
         pytest.param("abcdef", id="str"),
+        pytest.param(Z_GOOD + 0.5j, id="complex"),
+        pytest.param(Z_GOOD.astype(complex), id="complex-real"),
     ],
     "t": [
         pytest.param(np.zeros((2, 2)), id="2-D"),
@@ -61,12 +79,15 @@ BAD: dict[str, list[Any]] = {
         pytest.param(np.array([0.0, np.inf]), id="inf"),
         pytest.param(np.array([-1.0, 0.0]), id="negative"),
         pytest.param("abc", id="str"),
+        pytest.param(T_GOOD + 1j, id="complex"),
+        pytest.param([0.0, 1.0 + 0.0j], id="complex-real"),
     ],
     "z": [
         pytest.param(np.ones(5), id="len5"),
         pytest.param(np.array([1.0, np.nan, 0, 0, 0, 0]), id="nan"),
         pytest.param(np.full((3, 6), np.inf), id="inf"),
         pytest.param("abc", id="str"),
+        pytest.param(np.ones((3, 6)) * 1j, id="complex"),
     ],
 }
 BAD["k"] = BAD["mu0"]
@@ -82,6 +103,8 @@ def _cases() -> list[Any]:
         ]
         for name in names:
             for bad in BAD[name]:
+                if func in OF_STATES and bad.id == "2-D":
+                    continue  # a batch of states: accepted (test_functions_of_states_...)
                 cases.append(
                     pytest.param(
                         func, names, name, bad.values[0], id=f"{func.__name__}-{name}-{bad.id}"
@@ -99,8 +122,84 @@ def test_validation(func: Callable[..., Any], names: list[str], name: str, bad: 
         func(**kwargs)
 
 
+@pytest.mark.parametrize("func", [pytest.param(f, id=f.__name__) for f in OF_STATES])
+@pytest.mark.parametrize("shape", [(), (1,), (4,), (2, 3)], ids=lambda s: f"batch{s}")
+def test_functions_of_states_accept_the_same_shapes(func: Callable[..., Any], shape: tuple) -> None:
+    """validation: every function of states takes one state or a batch, row by row."""
+    rng = np.random.default_rng(7)
+    z = rng.normal(size=(*shape, 6))
+    args = (0.4,) if "k" in inspect.signature(func).parameters else ()
+    out = func(z, *args)
+    rows = z.reshape(-1, 6)
+    expected = np.array([func(row, *args) for row in rows])
+    assert out.shape == (*shape, expected.shape[-1])
+    np.testing.assert_array_equal(out.reshape(expected.shape), expected)
+
+
+@pytest.mark.parametrize("func", [pytest.param(f, id=f.__name__) for f in OF_STATES])
+@pytest.mark.parametrize(
+    "bad",
+    [
+        pytest.param(np.ones((2, 5)), id="last-axis-5"),
+        pytest.param(np.ones((0, 7)), id="last-axis-7"),
+        pytest.param(np.ones(()), id="scalar"),
+    ],
+)
+def test_functions_of_states_refuse_the_same_shapes(func: Callable[..., Any], bad: Any) -> None:
+    """validation: every function of states refuses a last axis other than 6."""
+    args = (0.4,) if "k" in inspect.signature(func).parameters else ()
+    with pytest.raises(ValueError, match=r"^z0?\b.*shape"):
+        func(bad, *args)
+
+
+@pytest.mark.parametrize(
+    ("mu0", "k"),
+    [
+        pytest.param(0.0793, 0.4, id="mu0=0.0793-k=2/5"),
+        pytest.param(1.0, 1.0, id="mu0=1-k=1"),
+        pytest.param(1e-6, 0.05, id="mu0=1e-6-k=0.05"),
+    ],
+)
+@pytest.mark.parametrize("func", [tt.solve, tt.modal_terms], ids=lambda f: f.__name__)
+def test_overflow_is_refused_with_the_largest_time(
+    func: Callable[..., Any], mu0: float, k: float
+) -> None:
+    """validation: a time where e^(alpha1 t) overflows is refused, naming the largest t.
+
+    The named time is within a few units of ln(DBL_MAX) / alpha1 (written out here from
+    the largest double and alpha1 of `spectrum`), the solution there is finite, and
+    twice that time is refused before any work (no overflow warning).
+    """
+    z0 = np.array([1.0, 1.0, 0.0, 0.0, 0.0, 1.0])
+    alpha1 = float(tt.spectrum(mu0, k).alpha1)
+    bound = np.log(np.finfo(float).max) / alpha1
+    assert float(tt.max_time(mu0, k)) == pytest.approx(bound, rel=1e-12)
+    with (
+        np.errstate(all="raise"),
+        pytest.raises(ValueError, match=r"^t must be at most [0-9.e+]+") as info,
+    ):
+        func(z0, [0.0, 2.0 * bound], mu0, k)
+    named = float(re.match(r"^t must be at most ([0-9.e+]+)", str(info.value)).group(1))
+    assert 0.9 * bound < named <= bound
+    if func is tt.solve:
+        assert named == float(tt.max_time(mu0, k, z0))
+    with np.errstate(over="raise", invalid="raise", divide="raise", under="ignore"):
+        z = np.asarray(func(z0, [0.0, named], mu0, k))
+    assert np.all(np.isfinite(z))
+    with pytest.raises(ValueError, match=r"^t must be at most"):
+        func(z0, [0.0, np.nextafter(named, np.inf) * (1 + 1e-12)], mu0, k)
+
+
+def test_max_time_broadcasts_without_an_initial_state() -> None:
+    """validation: max_time(mu0, k) over a grid is ln(DBL_MAX) / alpha1 elementwise."""
+    mu0 = np.array([[1e-3], [1.0], [1e3]])
+    k = np.array([0.05, 0.4, 1.0])
+    expected = np.log(np.finfo(float).max) / tt.spectrum(mu0, k).alpha1
+    np.testing.assert_allclose(tt.max_time(mu0, k), expected, rtol=1e-15)
+
+
 @pytest.mark.parametrize("name", ["wz0", "g"])
-@pytest.mark.parametrize("bad", [np.nan, np.inf, "abc"])
+@pytest.mark.parametrize("bad", [np.nan, np.inf, "abc", 1j])
 def test_newton_euler_extra_arguments(name: str, bad: Any) -> None:
     """validation: newton_euler rejects a non-finite spin wz0 or gravity g."""
     with pytest.raises(ValueError, match=rf"^{name}\b"):

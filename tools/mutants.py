@@ -73,7 +73,7 @@ MUTANTS = [
         "centre-sign",
         "y0 = wy - vx/k instead of wy + vx/k, wherever the centre is computed",
         (
-            ("solution.py", "(k * z0[5] + z0[2]) / k", "(k * z0[5] - z0[2]) / k", 1),
+            ("solution.py", "(k * z0[..., 5] + z0[..., 2]) / k", "(k * z0[..., 5] - z0[..., 2]) / k", 1),
             (
                 "solution.py",
                 "rc = w0 + 1j * v0 / k",

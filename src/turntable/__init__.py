@@ -13,6 +13,7 @@ from turntable.newton_euler import NewtonEulerResult, newton_euler
 from turntable.solution import (
     ModalTerms,
     conserved,
+    max_time,
     modal_terms,
     no_slip_state,
     nonholonomic,
@@ -50,6 +51,7 @@ __all__ = [
     "limit_error",
     "log_damping_ratio",
     "log_growth_per_turn",
+    "max_time",
     "modal_terms",
     "newton_euler",
     "no_slip_state",

@@ -2,7 +2,9 @@
 
 Every public entry point validates its arguments here before doing any work,
 so that bad input raises a :class:`ValueError` that names the argument and
-what it must be, instead of propagating NaN or inf.
+what it must be, instead of propagating NaN or inf.  Complex input is refused
+(numpy would silently keep its real part), and `times_within` refuses times at
+which a growing solution would overflow a double.
 """
 
 from __future__ import annotations
@@ -16,6 +18,12 @@ from numpy.typing import ArrayLike, NDArray
 def _as_float_array(name: str, value: Any, what: str) -> NDArray[np.float64]:
     if isinstance(value, (str, bytes)) or value is None:
         raise ValueError(f"{name} must be {what}; got {value!r}")
+    try:
+        is_complex = np.iscomplexobj(np.asarray(value))
+    except (TypeError, ValueError):
+        is_complex = False
+    if is_complex:
+        raise ValueError(f"{name} must be {what}; got a complex value {value!r}")
     try:
         arr = np.asarray(value, dtype=float)
     except (TypeError, ValueError):
@@ -79,3 +87,36 @@ def times(name: str, value: ArrayLike, *, increasing: bool = False) -> NDArray[n
     if increasing and np.any(np.diff(arr) <= 0):
         raise ValueError(f"{name} must be {what}; got times that do not increase")
     return arr
+
+
+#: Natural logarithm of the largest double: exp(x) overflows for x above it.
+LOG_MAX = float(np.log(np.finfo(float).max))
+
+
+def finite_scalar(name: str, value: ArrayLike) -> float:
+    """Return ``value`` as a Python float that is finite (any sign)."""
+    what = "a single finite real number"
+    arr = _as_float_array(name, value, what)
+    if arr.ndim != 0 or not np.isfinite(arr):
+        raise ValueError(f"{name} must be {what}; got {value!r}")
+    return float(arr)
+
+
+def growth_limit(rate: ArrayLike, scale: float = 1.0) -> NDArray[np.float64]:
+    """Return the largest t at which ``scale * exp(rate * t)`` is still a finite double.
+
+    That is ``(LOG_MAX - ln max(1, scale)) / rate`` (infinite where rate <= 0).
+    """
+    rate = np.asarray(rate, dtype=float)
+    room = LOG_MAX - max(0.0, float(np.log(scale))) if scale > 0 else LOG_MAX
+    with np.errstate(divide="ignore"):
+        return np.where(rate > 0, room / np.where(rate > 0, rate, 1.0), np.inf)
+
+
+def times_within(name: str, t: NDArray[np.float64], t_max: float, why: str) -> None:
+    """Raise ValueError if a time of ``t`` exceeds ``t_max``, naming ``t_max`` and why."""
+    if t.size and float(np.max(t)) > t_max:
+        raise ValueError(
+            f"{name} must be at most {t_max:.17g}, the largest time this solution can "
+            f"represent ({why}); got max({name}) = {float(np.max(t)):.17g}"
+        )

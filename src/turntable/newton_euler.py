@@ -100,9 +100,8 @@ def newton_euler(
         raise ValueError("t must be a non-empty 1-D array of times >= 0")
     mu0 = _validate.positive_scalar("mu0", mu0)
     k = _validate.positive_scalar("k", k)
-    for name, value in (("wz0", wz0), ("g", g)):
-        if not np.isfinite(_validate._as_float_array(name, value, "a finite number")).all():
-            raise ValueError(f"{name} must be a finite number; got {value!r}")
+    wz0 = _validate.finite_scalar("wz0", wz0)
+    g = _validate.finite_scalar("g", g)
 
     def normal_force(r: NDArray, v: NDArray, w: NDArray) -> float:
         return g + mu0 * float(_slip(r, v, w) @ GAMMA)

@@ -23,9 +23,9 @@ Since lambda_+ + lambda_- = -2 mu is real, E X = e^{lambda_- t} - e^{lambda_+ t}
 (X = expm1(-(lambda_+ - lambda_-) t)) equals
 e^{alpha1 t} (expm1(a) cos(beta t) - i sin(beta t) (2 + expm1(a))) with
 a = (alpha2 - alpha1) t, so `solve` needs only the real functions exp, expm1,
-cos and sin.  Nothing here overflows (Re lambda_- < 0 and alpha1 t stays
-moderate), nothing cancels as the roots merge (mu0 -> 0) or separate
-(mu0 -> infinity).
+cos and sin.  Nothing here overflows (Re lambda_- < 0, and times at which
+e^{alpha1 t} would overflow are refused, see `max_time`), nothing cancels as
+the roots merge (mu0 -> 0) or separate (mu0 -> infinity).
 """
 
 from __future__ import annotations
@@ -36,7 +36,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from turntable import _validate
-from turntable.spectrum import _spectrum
+from turntable.spectrum import _spectrum, spectrum
 
 
 def _complex_state(z0: NDArray[np.float64]) -> tuple[complex, complex, complex]:
@@ -81,14 +81,14 @@ def spiral_centre(z0: ArrayLike, k: float) -> NDArray[np.float64]:
     Parameters
     ----------
     z0 : array_like
-        Initial state (x, y, vx, vy, wx, wy).
+        State(s) with last axis (x, y, vx, vy, wx, wy), as in `conserved`.
     k : float
         Inertia ratio, > 0.
 
     Returns
     -------
     numpy.ndarray
-        ``[x0, y0]``.
+        ``[x0, y0]``, of shape ``z0.shape[:-1] + (2,)``.
 
     Notes
     -----
@@ -100,9 +100,9 @@ def spiral_centre(z0: ArrayLike, k: float) -> NDArray[np.float64]:
     fixed point x0 e1 + y0 e2 with the same conserved c as z0, and at a
     fixed point v = 0, w = (x0, y0), so c = -i k (x0 + i y0).
     """
-    z0 = _validate.state("z0", z0)
+    z0 = _validate.states("z0", z0)
     k = _validate.positive_scalar("k", k)
-    return np.array([(k * z0[4] - z0[3]) / k, (k * z0[5] + z0[2]) / k])
+    return np.stack([(k * z0[..., 4] - z0[..., 3]) / k, (k * z0[..., 5] + z0[..., 2]) / k], axis=-1)
 
 
 class _Coefficients(NamedTuple):
@@ -144,6 +144,13 @@ def solve(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> NDArray[np.float
     numpy.ndarray
         Shape (len(t), 6).
 
+    Raises
+    ------
+    ValueError
+        For a bad argument, or a time beyond `max_time` (mu0, k, z0), where
+        the growing part e^{alpha1 t} of the solution overflows a double; the
+        message names that largest time.
+
     Notes
     -----
     Equation (2.7), z(t) = z0 + z+(t) + z-(t), evaluated in the
@@ -163,6 +170,7 @@ def solve(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> NDArray[np.float
     q = -(c.v0 - c.lp * c.rho0) / d
     qv = -(c.lm * c.v0 + 1j * c.mu0 * c.rho0) / d
     coef = _solution_matrix(c.rc, c.rho0, q, c.v0, qv, c.k)
+    _validate.times_within("t", t, _time_limit(c, coef), _limit_reason(c))
     out = np.empty((t.size, 6))
     # Work in blocks so that the temporaries stay small (cache-resident and
     # reused by the allocator); only the result is a large fresh array.
@@ -186,6 +194,61 @@ def solve(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> NDArray[np.float
 
 #: Number of time points evaluated at once by `solve`.
 _BLOCK = 2048
+
+
+def _time_limit(c: _Coefficients, coef: NDArray[np.float64]) -> float:
+    """Largest t at which `solve` (coefficients ``coef``) stays a finite double.
+
+    On the basis (1, Re E, Im E, Re E X, -Im E X) the last four functions are
+    bounded by G, G, G and 2 G with G = e^{alpha1 t}, so every component of
+    z(t) is at most G times ``scale`` below, and the growth factor G itself
+    must be finite.
+    """
+    scale = np.abs(coef[0]) + np.abs(coef[1:]).T @ np.array([1.0, 1.0, 1.0, 2.0])
+    return float(_validate.growth_limit(c.lp.real, float(np.max(scale))))
+
+
+def _limit_reason(c: _Coefficients) -> str:
+    return (
+        f"for mu0={c.mu0:g}, k={c.k:g}, e^(alpha1 t) times the size of the solution "
+        "overflows a double beyond it"
+    )
+
+
+def max_time(mu0: ArrayLike, k: ArrayLike, z0: ArrayLike | None = None) -> NDArray[np.float64]:
+    """Return the largest time t at which the solution is representable in doubles.
+
+    Parameters
+    ----------
+    mu0, k : float or array_like
+        Friction coefficient and inertia ratio, finite and > 0; broadcast
+        against each other.  Single numbers if `z0` is given.
+    z0 : array_like, optional
+        Initial state (x, y, vx, vy, wx, wy).  Without it, the bound is
+        where the growth factor e^{alpha1 t} itself overflows.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``ln(DBL_MAX) / alpha1`` (about 709.78 / alpha1), of the broadcast
+        shape; with `z0`, the (slightly smaller) largest t that `solve`
+        accepts for that initial state, as a 0-d array.  `solve` and
+        `modal_terms` raise ValueError for later times.
+
+    Notes
+    -----
+    Equation (2.7): the growing part of the solution is proportional to
+    e^{alpha1 t}, alpha1 of (2.5)-(2.6), and a double holds at most
+    DBL_MAX = 1.8e308 = e^{709.78}.
+    """
+    if z0 is None:
+        s = spectrum(mu0, k)
+        return _validate.growth_limit(s.alpha1)
+    c = _coefficients(z0, mu0, k)
+    d = c.lp - c.lm
+    q = -(c.v0 - c.lp * c.rho0) / d
+    qv = -(c.lm * c.v0 + 1j * c.mu0 * c.rho0) / d
+    return np.asarray(_time_limit(c, _solution_matrix(c.rc, c.rho0, q, c.v0, qv, c.k)))
 
 
 def _solution_matrix(
@@ -252,6 +315,11 @@ def modal_terms(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> ModalTerms
     t = _validate.times("t", t)
     c = _coefficients(z0, mu0, k)
     d = c.lp - c.lm
+    # Each component of the growing mode is at most |A| e^{alpha1 t} max(1, |lambda_+| / k)
+    # times 1 + |lambda_+| (position, velocity and spin together).
+    size = abs((c.v0 - c.lm * c.rho0) / d) * (1.0 + abs(c.lp)) * max(1.0, 1.0 / c.k)
+    t_max = float(_validate.growth_limit(c.lp.real, size + abs(c.rc)))
+    _validate.times_within("t", t, t_max, _limit_reason(c))
     centre = _real_state(np.full(t.shape, c.rc), np.zeros(t.shape), np.full(t.shape, c.rc))
     # The decaying mode underflows to 0 for large mu0 t: harmless.
     with np.errstate(under="ignore"):
@@ -268,27 +336,29 @@ def no_slip_state(z0: ArrayLike, k: float) -> NDArray[np.float64]:
     Parameters
     ----------
     z0 : array_like
-        Initial state (x, y, vx, vy, wx, wy), possibly with slip.
+        State(s) with last axis (x, y, vx, vy, wx, wy), possibly with slip,
+        as in `conserved`.
     k : float
         Inertia ratio, > 0.
 
     Returns
     -------
     numpy.ndarray
-        The state with the same r and the same conserved quantities as z0
-        whose slip velocity u = v + gamma x w - gamma x r vanishes.
+        The state(s), of the shape of z0, with the same r and the same
+        conserved quantities as z0 whose slip velocity
+        u = v + gamma x w - gamma x r vanishes.
 
     Notes
     -----
     Section 3: in complex form u = v + i (w - r) = 0 and c = v - i k w fix
     v = i k (r - r_c) / (k + 1) and w = r + i v.
     """
-    z0 = _validate.state("z0", z0)
+    z0 = _validate.states("z0", z0)
     k = _validate.positive_scalar("k", k)
-    r0, v0, w0 = _complex_state(z0)
+    r0, v0, w0 = (z0[..., j] + 1j * z0[..., j + 1] for j in (0, 2, 4))
     rc = w0 + 1j * v0 / k
     v = 1j * k / (k + 1.0) * (r0 - rc)
-    return _real_state(np.array(r0), np.array(v), np.array(r0 + 1j * v))
+    return _real_state(np.asarray(r0), np.asarray(v), np.asarray(r0 + 1j * v))
 
 
 def slip_velocity(z: ArrayLike) -> NDArray[np.float64]:
@@ -336,7 +406,7 @@ def nonholonomic(z0: ArrayLike, t: ArrayLike, k: float) -> NDArray[np.float64]:
         v = i k (r - r_c) / (k + 1),   w = r_c + (r - r_c) / (k + 1).
     """
     t = _validate.times("t", t)
-    z0 = no_slip_state(z0, k)
+    z0 = no_slip_state(_validate.state("z0", z0), k)
     r0, _, _ = _complex_state(z0)
     rc = complex(*spiral_centre(z0, k))
     omega = k / (k + 1.0)

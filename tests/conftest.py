@@ -1,7 +1,7 @@
 """Hypothesis settings and fixtures shared by the tests.
 
 Independent reference computations (sympy, mpmath, numpy) live in
-``tests/reference.py``.
+``src/turntable/reference.py`` (shared with the claims checks and the benchmarks).
 """
 
 from __future__ import annotations
@@ -11,7 +11,18 @@ import pytest
 from hypothesis import settings
 from numpy.typing import NDArray
 
-from reference import K_PARAMS, MU0_PARAMS
+# Parametrized grids shared by several modules ------------------------------------------
+
+K_PARAMS = [
+    pytest.param(2.0 / 5.0, id="k=2/5"),
+    pytest.param(2.0 / 3.0, id="k=2/3"),
+    pytest.param(1.0, id="k=1"),
+]
+MU0_PARAMS = [
+    pytest.param(0.1, id="mu0=0.1"),
+    pytest.param(1.0, id="mu0=1"),
+    pytest.param(10.0, id="mu0=10"),
+]
 
 settings.register_profile("turntable", deadline=None, max_examples=60, derandomize=True)
 settings.load_profile("turntable")

@@ -219,7 +219,7 @@ def test_wrong_scale_of_the_damping_ratio_fails(monkeypatch: pytest.MonkeyPatch)
 
 
 def test_wrong_sign_of_the_beta_remainder_fails(monkeypatch: pytest.MonkeyPatch) -> None:
-    from turntable.claims import _reference as ref
+    from turntable import reference as ref
 
     exact = ref.mp_spectrum
 

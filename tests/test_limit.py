@@ -13,9 +13,9 @@ import pytest
 from numpy.testing import assert_allclose
 
 import turntable as tt
-from reference import (
-    DPS,
+from turntable.reference import (
     K_BALL,
+    ROOTS_DPS,
     conserved_by_definition,
     exact_roots,
     log_log_slope,
@@ -34,7 +34,7 @@ K_EXPANSION = [
 def _mp_remainders(mu0: float, k: float) -> tuple[float, float, float]:
     """Exact roots minus (3.2), all in 60-digit arithmetic: (alpha1, alpha2, beta)."""
     roots = exact_roots(mu0, k)
-    with mpmath.workdps(DPS):
+    with mpmath.workdps(ROOTS_DPS):
         m, kk = mpmath.mpf(mu0), mpmath.mpf(k)
         ratio = kk / (kk + 1)
         corr = ratio**3 / m

@@ -13,7 +13,7 @@ import pytest
 from numpy.testing import assert_allclose
 
 import turntable as tt
-from reference import conserved_by_definition
+from turntable.reference import conserved_by_definition
 
 INTEGRATOR = {"method": "LSODA", "rtol": 1e-12, "atol": 1e-14}
 T = np.linspace(0.0, 10.0, 41)

@@ -18,13 +18,16 @@ from scipy.linalg import expm
 from scipy.optimize import brentq
 
 import turntable as tt
-from reference import (
+from turntable.reference import (
     K_BALL,
     conserved_by_definition,
+    eig_kernel_part,
+    eig_mode_part,
     exact_roots,
-    kernel_projection,
-    mode_projection,
+    expm_solution,
+    expm_trajectories,
     reference_matrix,
+    slip_by_definition,
 )
 
 finite = st.floats(min_value=-10.0, max_value=10.0)
@@ -70,12 +73,12 @@ def test_solution_decomposition(z0: np.ndarray, mu0: float, k: float) -> None:
     assert_allclose(total, tt.solve(z0, t, mu0, k), rtol=0, atol=1e-13 * scale)
 
     norm0 = np.linalg.norm(z0)
-    assert_allclose(parts.centre[0], kernel_projection(z0, mu0, k), rtol=0, atol=1e-12 * norm0)
+    assert_allclose(parts.centre[0], eig_kernel_part(z0, mu0, k), rtol=0, atol=1e-12 * norm0)
     assert_allclose(
-        parts.plus[0], mode_projection(z0, mu0, k, growing=True), rtol=0, atol=1e-11 * norm0
+        parts.plus[0], eig_mode_part(z0, mu0, k, growing=True), rtol=0, atol=1e-11 * norm0
     )
     assert_allclose(
-        parts.minus[0], mode_projection(z0, mu0, k, growing=False), rtol=0, atol=1e-11 * norm0
+        parts.minus[0], eig_mode_part(z0, mu0, k, growing=False), rtol=0, atol=1e-11 * norm0
     )
     # The centre term does not move.
     assert_allclose(parts.centre, np.tile(parts.centre[0], (t.size, 1)), rtol=0, atol=0)
@@ -140,7 +143,7 @@ def test_solution_centre(z0: np.ndarray, mu0: float, k: float) -> None:
     fixed point has the same conserved quantities as z(0).
     """
     centre = tt.spiral_centre(z0, k)
-    proj = kernel_projection(z0, mu0, k)
+    proj = eig_kernel_part(z0, mu0, k)
     scale = np.linalg.norm(z0) / k
     assert_allclose(centre, proj[:2], rtol=0, atol=1e-12 * scale)
     assert_allclose(centre, proj[4:], rtol=0, atol=1e-12 * scale)
@@ -161,7 +164,7 @@ def test_centre_sign_of_vx_term(k: float) -> None:
     """
     z0 = np.array([0.0, 0.0, 1.0, 0.0, 0.0, 0.0])
     assert_allclose(tt.spiral_centre(z0, k), [0.0, 1.0 / k], rtol=1e-15, atol=0)
-    assert_allclose(kernel_projection(z0, 1.0, k)[:2], [0.0, 1.0 / k], rtol=0, atol=1e-12 / k)
+    assert_allclose(eig_kernel_part(z0, 1.0, k)[:2], [0.0, 1.0 / k], rtol=0, atol=1e-12 / k)
 
     mu0 = 1e3
     period = 2.0 * np.pi * (k + 1.0) / k
@@ -278,3 +281,60 @@ def test_conserved_along_solve(z0: np.ndarray, log10_mu0: float, k: float) -> No
     assert_allclose(c, np.tile(c[0], (t.size, 1)), rtol=0, atol=1e-12 * scale)
     assert_allclose(c[0], conserved_by_definition(z0, k)[0], rtol=0, atol=1e-13 * scale)
     assert_allclose(tt.conserved(z, k), c, rtol=0, atol=0)
+
+
+# --- solve on many times ---------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "mu0", [pytest.param(0.0793, id="mu0=0.0793"), pytest.param(1.0, id="mu0=1")]
+)
+def test_solve_on_more_times_than_one_block(mu0: float, z_fig4: np.ndarray) -> None:
+    """solve: 5000 samples to t = 45 (three blocks of evaluation) against exp(L t) z0.
+
+    `solve` evaluates its times in blocks; every block must use its own times.  Reference:
+    mpmath's matrix exponential at 30 digits at 80 of the times, the first and last of
+    each block among them, and scipy's expm stepped over all 5000 times.  Error relative
+    to max(1, size of the trajectory): 1e-12 against mpmath, 1e-9 against the stepped
+    expm (its rounding accumulates over the steps).
+    """
+    t = np.linspace(0.0, 45.0, 5000)
+    block = tt.solution._BLOCK
+    assert t.size > 2 * block, "the test must span more than two blocks"
+    z = tt.solve(z_fig4, t, mu0, K_BALL)
+    scale = max(1.0, float(np.abs(z).max()))
+
+    ends = [i for b in range(0, t.size, block) for i in (b, min(b + block, t.size) - 1)]
+    idx = np.unique(np.r_[np.linspace(0, t.size - 1, 72).round().astype(int), ends])
+    ref = expm_trajectories([z_fig4], t[idx], mu0, K_BALL, dps=30)[0]
+    exact = np.array([[float(c) for c in row] for row in ref])
+    assert np.abs(z[idx] - exact).max() / scale < 1e-12
+
+    stepped = expm_solution(reference_matrix(mu0, K_BALL), z_fig4, t)
+    assert np.abs(z - stepped).max() / scale < 1e-9
+
+
+# --- slip velocity ------------------------------------------------------------------------
+
+
+@given(z=st.lists(states, min_size=1, max_size=5).map(np.array))
+def test_slip_velocity_by_definition(z: np.ndarray) -> None:
+    """slip_velocity: u = v + gamma x w - gamma x r at any state, fixed point or not.
+
+    Reference: the cross products written out in 3-D (`slip_by_definition`).
+    """
+    assert_allclose(tt.slip_velocity(z), slip_by_definition(z), rtol=0, atol=1e-15)
+
+
+@pytest.mark.parametrize("z0", STATES)
+def test_slip_velocity_drives_the_friction(z0: np.ndarray, mu0: float, k: float) -> None:
+    """slip_velocity: the friction force of (1.6) is -mu0 u, so dv/dt = -mu0 u.
+
+    dv/dt from the sympy matrix of (1.7), at a slipping state (u != 0) and at the states
+    of its trajectory.
+    """
+    z = tt.solve(z0, np.linspace(0.0, 3.0, 7), mu0, k)
+    u = tt.slip_velocity(z)
+    assert np.abs(u).max() > 0.1
+    dv = (z @ reference_matrix(mu0, k).T)[:, 2:4]
+    assert_allclose(-mu0 * u, dv, rtol=0, atol=1e-13 * mu0 * np.abs(z).max())

@@ -16,7 +16,7 @@ from hypothesis import strategies as st
 from numpy.testing import assert_allclose
 
 import turntable as tt
-from reference import (
+from turntable.reference import (
     exact_roots,
     reference_matrix,
     slip_by_definition,

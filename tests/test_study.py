@@ -1,7 +1,7 @@
 """The parameter study: turntable.study and rules study_k / study (workflow/rules/study.smk).
 
 Expected values come from the high-precision roots of the characteristic polynomial
-(tests/reference.py, sympy + mpmath) and from the reference table of the project's notes
+(turntable.reference, sympy + mpmath) and from the reference table of the project's notes
 (values re-derived at high precision, not printed in the paper); each check
 of `section2_checks` is also shown to fail on a deliberately wrong input.
 """
@@ -17,8 +17,8 @@ import yaml
 
 import turntable.study as study
 from ci_build import job_counts, shared_build
-from reference import K_BALL, exact_roots
 from turntable import Spectrum
+from turntable.reference import K_BALL, exact_roots
 
 ROOT = Path(__file__).resolve().parents[1]
 Z_FIG4 = [1.0, 1.0, 0.0, 0.0, 0.0, 1.0]

@@ -38,6 +38,7 @@ OWN_TESTS = (
     "test_solution.py",
     "test_model.py",
     "test_limit.py",
+    "test_limits.py",
     "test_validation.py",
 )
 
@@ -73,7 +74,12 @@ MUTANTS = [
         "centre-sign",
         "y0 = wy - vx/k instead of wy + vx/k, wherever the centre is computed",
         (
-            ("solution.py", "(k * z0[..., 5] + z0[..., 2]) / k", "(k * z0[..., 5] - z0[..., 2]) / k", 1),
+            (
+                "solution.py",
+                "(k * z0[..., 5] + z0[..., 2]) / k",
+                "(k * z0[..., 5] - z0[..., 2]) / k",
+                1,
+            ),
             (
                 "solution.py",
                 "rc = w0 + 1j * v0 / k",
@@ -114,6 +120,40 @@ MUTANTS = [
         "wy = wy_c + vx / k instead of wy_c - vx / k in solve (w = r_c - i v / k)",
         (("solution.py", "m[1:, 5] = -v[:, 0] / k", "m[1:, 5] = v[:, 0] / k", 1),),
     ),
+    Mutant(
+        "solve-block-times",
+        "solve takes the growth factor of every block of times at the first block's times",
+        (
+            (
+                "solution.py",
+                "growth = np.exp(c.lp.real * tb)",
+                "growth = np.exp(c.lp.real * t[: tb.size])",
+                1,
+            ),
+        ),
+    ),
+    Mutant(
+        "slip-sign",
+        "slip_velocity with the opposite sign of gamma x (.): u = v - gamma x w + gamma x r",
+        (
+            (
+                "solution.py",
+                "z[..., 2] - z[..., 5] + z[..., 1], z[..., 3] + z[..., 4] - z[..., 0]",
+                "z[..., 2] + z[..., 5] - z[..., 1], z[..., 3] - z[..., 4] + z[..., 0]",
+                1,
+            ),
+        ),
+    ),
+    Mutant(
+        "small-friction-sign",
+        "alpha1 = sqrt(mu0/2) + mu instead of sqrt(mu0/2) - mu (small_friction_expansion)",
+        (("limits.py", "Expansion(root - mu, -root - mu,", "Expansion(root + mu, -root - mu,", 1),),
+    ),
+    Mutant(
+        "no-slip-period",
+        "no-slip period 2 pi (k + 2) / k instead of 2 pi (k + 1) / k (nonholonomic_period)",
+        (("limits.py", "2.0 * np.pi * (k + 1.0) / k", "2.0 * np.pi * (k + 2.0) / k", 1),),
+    ),
 ]
 
 
@@ -127,8 +167,7 @@ def _prepare(tmp: Path) -> list[str]:
         ROOT / "src", tmp / "src", ignore=shutil.ignore_patterns("__pycache__", "*.egg-info")
     )
     (tmp / "tests").mkdir()
-    for name in ("conftest.py", "reference.py"):
-        shutil.copy2(ROOT / "tests" / name, tmp / "tests" / name)
+    shutil.copy2(ROOT / "tests" / "conftest.py", tmp / "tests" / "conftest.py")
     tests = []
     for path in _own_tests():
         shutil.copy2(path, tmp / "tests" / path.name)

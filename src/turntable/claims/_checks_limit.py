@@ -8,7 +8,7 @@ import mpmath
 import numpy as np
 
 import turntable as tt
-from turntable.claims import _reference as ref
+from turntable import reference as ref
 from turntable.claims._core import Outcome, Where, register, sig
 
 

@@ -10,7 +10,7 @@ import scipy.optimize
 import sympy as sp
 
 import turntable as tt
-from turntable.claims import _reference as ref
+from turntable import reference as ref
 from turntable.claims._core import Outcome, Where, mu0_grid, random_states, register, sig
 
 

@@ -1,33 +1,32 @@
 """turntable.limits, the functions behind Figs. 2 and 6, against independent computations.
 
-References: the roots of det(lambda - L) = lambda^2 [(lambda^2 + 2 mu lambda)^2 + mu0^2] / mu^4
-in 50-digit mpmath, solved as lambda = -mu +- sqrt(mu^2 +- i mu0) (no use of a, b of (2.5));
-the flow of dz/dt = L z from scipy.linalg.expm with L written out from (1.7); the no-slip
-circle (3.3) written out from the conserved quantities (2.8).
+References (`turntable.reference`): the textbook roots mu (-1 +- sqrt(1 + i eps)) of (2.4)
+in mpmath with 50 correct digits (no use of a, b of (2.5)); the flow of dz/dt = L z from
+scipy.linalg.expm of the sympy matrix (1.7); the no-slip circle (3.3) written out here
+from the conserved quantities (2.8).
 """
 
 from __future__ import annotations
 
 import math
 
-import mpmath
 import numpy as np
 import pytest
-from scipy.linalg import expm
 
 import turntable
+from turntable.reference import (
+    expm_solution,
+    reference_dps,
+    reference_matrix,
+    textbook_spectrum,
+)
 
 K_VALUES = [0.05, 0.4, 2.0 / 3.0, 1.0]
 
 
 def _roots(mu0: float, kk: float) -> tuple[float, float, float]:
-    """Return (alpha1, alpha2, beta) to 50 digits from the quadratic in lambda."""
-    with mpmath.workdps(50):
-        mu0m, km = mpmath.mpf(mu0), mpmath.mpf(kk)
-        mu = mu0m * (km + 1) / (2 * km)
-        root = mpmath.sqrt(mu**2 + 1j * mu0m)
-        lam1, lam3 = -mu + root, -mu - root
-        return float(lam1.real), float(lam3.real), float(abs(lam1.imag))
+    """Return (alpha1, alpha2, beta) from the textbook roots (2.4) to 50 correct digits."""
+    return tuple(float(x) for x in textbook_spectrum(mu0, kk, reference_dps(mu0, kk)))
 
 
 @pytest.mark.parametrize("kk", K_VALUES)
@@ -65,20 +64,7 @@ def test_nonholonomic_period_closed_form(kk: float, period: float) -> None:
 
 def _error_by_expm(z0: np.ndarray, t: np.ndarray, mu0: float, kk: float) -> float:
     """Largest |r - r_nh| on the grid t (uniform, from 0), from expm of (1.7)."""
-    eye, jay = np.eye(2), np.array([[0.0, -1.0], [1.0, 0.0]])
-    zero = np.zeros((2, 2))
-    big_l = np.block(
-        [
-            [zero, eye, zero],
-            [mu0 * jay, -mu0 * eye, -mu0 * jay],
-            [mu0 / kk * eye, mu0 / kk * jay, -mu0 / kk * eye],
-        ]
-    )
-    step = expm(big_l * (t[1] - t[0]))
-    z = np.empty((t.size, 6))
-    z[0] = z0
-    for n in range(1, t.size):
-        z[n] = step @ z[n - 1]
+    z = expm_solution(reference_matrix(mu0, kk), z0, t)
     r0 = complex(z0[0], z0[1])
     centre = complex((kk * z0[4] - z0[3]) / kk, (kk * z0[5] + z0[2]) / kk)  # (2.8)
     r_nh = centre + (r0 - centre) * np.exp(1j * kk / (kk + 1) * t)  # (3.3)

@@ -56,6 +56,7 @@ mutants: $(STAMP)
 
 bench: $(STAMP)
 	$(BIN)/python benchmarks/run.py
+	$(BIN)/python benchmarks/pipeline.py
 
 # Re-resolve the newest versions into constraints.txt (needs the network).
 lock:

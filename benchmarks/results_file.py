@@ -1,6 +1,7 @@
 """The shared results file ``results/benchmarks.json``: each benchmark owns some keys.
 
-Used by ``benchmarks/run.py``, ``benchmarks/pipeline.py`` and ``.ci/run``.
+The only writer of that file: used by the benchmarks of the closed forms (``benchmarks/run.py``
+and the topic scripts it runs), ``benchmarks/pipeline.py`` and ``.ci/run``.
 """
 
 from __future__ import annotations

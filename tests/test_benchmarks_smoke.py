@@ -1,4 +1,5 @@
-"""Smoke test of ``benchmarks/run.py``: its eigenvalue section runs and meets its target."""
+"""Smoke test of the benchmarks: the eigenvalue benchmark runs and meets its target, the
+driver ``benchmarks/run.py`` knows every topic, and results are merged into the shared file."""
 
 from __future__ import annotations
 
@@ -10,18 +11,39 @@ from types import ModuleType
 
 import pytest
 
-RUN = Path(__file__).resolve().parents[1] / "benchmarks" / "run.py"
+BENCHMARKS = Path(__file__).resolve().parents[1] / "benchmarks"
 
 
-@pytest.fixture(scope="module")
-def bench() -> ModuleType:
-    """The benchmark script, imported as a module (its main() is not run)."""
-    spec = importlib.util.spec_from_file_location("benchmarks_run", RUN)
+def _load(name: str) -> ModuleType:
+    """A benchmark script, imported as a module (its main() is not run)."""
+    spec = importlib.util.spec_from_file_location(f"benchmarks_{name}", BENCHMARKS / f"{name}.py")
     assert spec is not None
     assert spec.loader is not None
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module
+
+
+@pytest.fixture(scope="module")
+def bench() -> ModuleType:
+    """benchmarks/eigenvalues.py."""
+    return _load("eigenvalues")
+
+
+@pytest.fixture(scope="module")
+def common() -> ModuleType:
+    """benchmarks/_common.py (results file, versions, command line)."""
+    return _load("_common")
+
+
+def test_every_topic_is_run_by_the_driver() -> None:
+    run = _load("run")
+    names = [topic.NAME for topic in run.TOPICS]
+    assert names == ["eigenvalues", "solution", "speed"]
+    for topic in run.TOPICS:
+        assert callable(topic.run)
+        assert callable(topic.print_result)
+        assert Path(topic.__file__).name == f"{topic.NAME}.py"
 
 
 def test_eigenvalue_section_on_a_small_grid(bench: ModuleType) -> None:
@@ -41,10 +63,10 @@ def test_eigenvalue_section_on_a_small_grid(bench: ModuleType) -> None:
     assert res["methods"]["textbook complex128"]["by_decade"]["1e9"]["alpha1"] > 0.1
 
 
-def test_results_are_merged_into_the_shared_file(bench: ModuleType, tmp_path: Path) -> None:
+def test_results_are_merged_into_the_shared_file(common: ModuleType, tmp_path: Path) -> None:
     out = tmp_path / "benchmarks.json"
     out.write_text(json.dumps({"other": {"x": 1}, "eigenvalues": "stale"}))
-    bench.write_results(out, {"eigenvalues": {"pass": True}, "meta": bench.meta()})
+    common.write_results(out, {"eigenvalues": {"pass": True}, "meta": common.meta()})
     data = json.loads(out.read_text())
     assert data["other"] == {"x": 1}
     assert data["eigenvalues"] == {"pass": True}

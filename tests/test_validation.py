@@ -113,6 +113,12 @@ def _cases() -> list[Any]:
     return cases
 
 
+def test_every_public_function_is_checked() -> None:
+    """validation: the list above holds every public function of the package."""
+    public = {n for n in tt.__all__ if inspect.isfunction(getattr(tt, n))}
+    assert public == {f.__name__ for f in PUBLIC}
+
+
 @pytest.mark.parametrize(("func", "names", "name", "bad"), _cases())
 def test_validation(func: Callable[..., Any], names: list[str], name: str, bad: Any) -> None:
     """validation: bad input raises ValueError naming the argument."""

@@ -1,10 +1,10 @@
-"""The claims registry: one test per claim of the paper, plus its own guarantees.
+"""The claims registry: one test per registered claim, plus the registry's own guarantees.
 
-Each claim is checked with the parameters of the ``claims:`` section of
-config/config.yaml, the same the workflow uses for results/claims.json.  A
-verdict other than the expected one (``confirmed``, or ``refined`` for the claims in
-`REFINED_IDS`) fails the suite.  Further tests break the model on purpose
-and require the affected check to notice.
+The tests are generated from the registry: each claim is checked with the parameters of
+the ``claims:`` section of config/config.yaml (the same the workflow uses for
+results/claims.json), and a verdict other than the one its registration expects
+(``expected=`` of `turntable.claims.register`) fails the suite.  Further tests break the
+model on purpose and require the affected check to notice.
 """
 
 from __future__ import annotations
@@ -25,34 +25,6 @@ from turntable import claims
 from turntable.claims import report
 
 ROOT = Path(__file__).resolve().parents[1]
-
-#: The claim identifiers listed in the project's notes on the paper.
-PAPER_IDS = {
-    "model.reduction",
-    "model.rubber_ball",
-    "spectrum.char_poly",
-    "spectrum.kernel",
-    "spectrum.roots",
-    "spectrum.unstable_focus",
-    "solution.decomposition",
-    "solution.centre",
-    "solution.damping_ratio",
-    "solution.fast_transient",
-    "trajectory.spiral",
-    "trajectory.untwisting_slows",
-    "limit.expansion",
-    "limit.frequency",
-    "limit.convergence",
-}
-
-#: Claims whose statement holds only in a narrower form; every other claim is confirmed.
-REFINED_IDS = {
-    "solution.centre",
-    "solution.damping_ratio",
-    "solution.fast_transient",
-    "trajectory.untwisting_slows",
-    "limit.convergence",
-}
 
 FIELDS = {
     "id",
@@ -105,26 +77,58 @@ def test_claim_has_its_expected_verdict(claim_id: str) -> None:
     assert result["evidence"]
     assert result["method"]
     assert result["verdict"] != "failed", f"{claim_id} failed: {result['evidence']}"
-    expected = "refined" if claim_id in REFINED_IDS else "confirmed"
+    expected = claims.get(claim_id).expected
     assert result["verdict"] == expected, f"{claim_id}: {result['evidence']}"
+    # Every bound is stated under the key of the reproduced value it bounds.
+    assert set(result["tolerance"]) <= set(result["reproduced"]), claim_id
 
 
-def test_registry_covers_every_claim_of_the_notes() -> None:
-    ids = set(claims.claim_ids())
-    assert ids >= PAPER_IDS
-    for claim_id in ids - PAPER_IDS:
-        assert claims.get(claim_id).source == "project"
-    for claim_id in PAPER_IDS:
-        assert claims.get(claim_id).source == "paper"
+def test_verdicts_best_to_worst() -> None:
+    assert claims.VERDICTS == ("confirmed", "refined", "corrected", "undecidable", "failed")
+    assert set(report.VERDICT_MEANINGS) == set(claims.VERDICTS)
 
 
-def test_every_claim_records_where_it_is() -> None:
+def test_order_is_the_order_of_registration() -> None:
+    ids = claims.claim_ids()
+    assert ids == [c.id for c in claims.registered()]
+    assert len(set(ids)) == len(ids)
+    # The paper's sections come in the paper's order.
+    first = {
+        prefix: ids.index(next(i for i in ids if i.startswith(prefix)))
+        for prefix in ("model.", "spectrum.", "solution.", "limit.")
+    }
+    assert first["model."] < first["spectrum."] < first["solution."] < first["limit."]
+
+
+def test_every_claim_records_where_it_is_and_what_the_paper_says() -> None:
     for claim_id in claims.claim_ids():
         c = claims.get(claim_id)
         assert c.where.section, claim_id
         assert c.claim.endswith("."), claim_id
-        if c.paper_value is not None:
-            assert c.paper_value.get("text"), claim_id
+        assert c.paper_value.get("text"), claim_id
+        assert c.source in ("paper", "project"), claim_id
+        assert c.expected in claims.VERDICTS, claim_id
+        # An addition of the reproduction never reads as a location of the paper.
+        assert (c.source == "project") == c.label().startswith("added by the reproduction")
+
+
+def test_registration_refuses_a_claim_without_expected_verdict_or_paper_value() -> None:
+    where = claims.Where("Sec. 0")
+    with pytest.raises(ValueError, match="expected verdict"):
+        claims.register(
+            "x.y",
+            where=where,
+            claim="c.",
+            paper_value={"text": "t"},
+            method="m",
+            expected="probably",
+        )  # type: ignore[arg-type]
+    with pytest.raises(ValueError, match="paper_value"):
+        claims.register(
+            "x.y", where=where, claim="c.", paper_value={}, method="m", expected="confirmed"
+        )
+    with pytest.raises(ValueError, match="tolerance keys without a reproduced value"):
+        claims.Outcome("confirmed", {"a": 1.0}, {"b": 1.0}, "s", "e")
 
 
 def test_unknown_claim_id_names_the_argument() -> None:
@@ -142,6 +146,7 @@ def test_unknown_claim_id_names_the_argument() -> None:
         ("state_fig4", [1.0, 1.0, 0.0]),
         ("mu0_small", [1.0e-6, 0.5]),
         ("seed", True),
+        ("n_points", 400.0),
         ("no_such_key", 1),
     ],
 )
@@ -150,16 +155,20 @@ def test_bad_params_raise_naming_the_key(key: str, value: Any) -> None:
         claims.resolve_params({key: value})
 
 
-def test_config_section_matches_the_defaults_and_the_schema() -> None:
-    with open(ROOT / "workflow" / "schemas" / "config.schema.yaml", encoding="utf-8") as fh:
-        schema = yaml.safe_load(fh)["properties"]["claims"]
-    assert set(schema["properties"]) == set(claims.DEFAULT_PARAMS)
-    assert set(schema["required"]) == set(claims.DEFAULT_PARAMS)
-    assert schema["default"] == claims.DEFAULT_PARAMS
+def test_the_schema_is_the_one_source_of_defaults_and_rules() -> None:
+    """The package's schema gives every default; the workflow's schema refers to it."""
+    schema = claims.params_schema()
+    assert set(schema["required"]) == set(schema["properties"]) == set(claims.DEFAULT_PARAMS)
     for key, prop in schema["properties"].items():
-        assert prop["default"] == claims.DEFAULT_PARAMS[key], key
         assert prop.get("description"), key
+        assert "default" in prop, key
+        assert claims.DEFAULT_PARAMS[key] == prop["default"], key
+    with open(ROOT / "workflow" / "schemas" / "config.schema.yaml", encoding="utf-8") as fh:
+        workflow_schema = yaml.safe_load(fh)["properties"]["claims"]
+    target = (ROOT / "workflow" / "schemas" / workflow_schema["$ref"]).resolve()
+    assert target == (ROOT / "src/turntable/claims" / "params.schema.yaml").resolve()
     assert claims.resolve_params(config_params()) == claims.resolve_params(claims.DEFAULT_PARAMS)
+    assert claims.resolve_params({}) == claims.resolve_params(claims.DEFAULT_PARAMS)
 
 
 # A wrong model must not pass -------------------------------------------------------------
@@ -252,6 +261,56 @@ def test_wrong_no_slip_rate_fails(monkeypatch: pytest.MonkeyPatch) -> None:
     assert claims.evaluate("limit.convergence", params)["verdict"] == "failed"
 
 
+def test_dimensional_spin_holds_for_another_ball(monkeypatch: pytest.MonkeyPatch) -> None:
+    from turntable.claims import _checks_spectrum as checks
+
+    monkeypatch.setattr(checks, "DIMENSIONAL_BALL", {"R": 2.0, "Omega": 0.3, "m": 5.0})
+    result = claims.evaluate("spectrum.kernel", SMALL)
+    assert result["verdict"] == "confirmed"
+    assert result["reproduced"]["dimensional_ball"]["R"] == 2.0
+
+
+def test_wrong_dimensional_spin_fails(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Equations whose plane turns 1% faster than the Omega of the statement must fail."""
+    from turntable.claims import _checks_spectrum as checks
+
+    exact = checks._dimensional_matrix
+
+    def faster(mu0_dim: float, k: float, ball: dict[str, float]) -> np.ndarray:
+        return exact(mu0_dim, k, {**ball, "Omega": 1.01 * ball["Omega"]})
+
+    monkeypatch.setattr(checks, "_dimensional_matrix", faster)
+    assert claims.evaluate("spectrum.kernel", SMALL)["verdict"] == "failed"
+
+
+def test_decaying_part_turning_with_the_plane_is_not_refined(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Mirror the decaying part so that it turns like the growing one: the check notices."""
+    exact = turntable.modal_terms
+
+    def mirrored(z0: Any, t: Any, mu0: float, k: float) -> Any:
+        m = exact(z0, t, mu0, k)
+        minus = m.minus * np.array([1.0, -1.0, 1.0, -1.0, 1.0, -1.0])
+        return m._replace(minus=minus)
+
+    monkeypatch.setattr(turntable, "modal_terms", mirrored)
+    assert claims.evaluate("solution.decomposition", SMALL)["verdict"] == "failed"
+
+
+def test_a_zero_failed_summary_names_the_erratum() -> None:
+    records = [
+        {"id": "a.b", "verdict": "confirmed", "source": "paper"},
+        {"id": "c.d", "verdict": "corrected", "source": "paper"},
+        {"id": "e.f", "verdict": "refined", "source": "project"},
+    ]
+    line = report.summary_line(report.summarize(records))
+    assert "0 failed" in line
+    assert "1 corrected" in line
+    assert "Corrected: `c.d`" in line
+    assert "2 of the paper, 1 added by the reproduction" in line
+
+
 # Reports -------------------------------------------------------------------------------
 
 
@@ -265,8 +324,7 @@ def _small_report() -> dict[str, Any]:
         "git_commit": "unknown",
         "params": claims.resolve_params(config_params()),
         "order": ids,
-        "summary": {v: sum(r["verdict"] == v for r in records) for v in claims.VERDICTS}
-        | {"total": len(records)},
+        "summary": report.summarize(records),
         "claims": {r["id"]: r for r in records},
     }
 
@@ -290,6 +348,9 @@ def test_markdown_has_one_row_per_claim() -> None:
         assert row.startswith(f"| `{claim_id}` |")
         assert row.count(" | ") == 5
         assert row.endswith(f"**{data['claims'][claim_id]['verdict']}** |")
+    for record in data["claims"].values():
+        for key in record["tolerance"]:
+            assert f"`{key}` = " in text
 
 
 def test_non_finite_values_are_refused() -> None:

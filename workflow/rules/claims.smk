@@ -4,7 +4,9 @@
 # so that the rule also runs with --directory elsewhere.
 
 CLAIMS_SOURCES = sorted(
-    str(p) for p in (Path(workflow.basedir) / "src" / "turntable").rglob("*.py")
+    str(p)
+    for pattern in ("*.py", "*.yaml")
+    for p in (Path(workflow.basedir) / "src" / "turntable").rglob(pattern)
 )
 
 

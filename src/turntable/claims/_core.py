@@ -2,80 +2,81 @@
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
+from importlib import resources
+from types import MappingProxyType
 from typing import Any, Literal
 
+import jsonschema
 import numpy as np
+import yaml
 from numpy.typing import NDArray
 
-Verdict = Literal["confirmed", "refined", "failed"]
+Verdict = Literal["confirmed", "refined", "corrected", "undecidable", "failed"]
 
-#: The three verdicts, from best to worst.
-VERDICTS: tuple[Verdict, ...] = ("confirmed", "refined", "failed")
+#: The verdicts, from best to worst (their meaning: `turntable.claims`).
+VERDICTS: tuple[Verdict, ...] = ("confirmed", "refined", "corrected", "undecidable", "failed")
 
 #: Significant digits kept for every float written to the report.
 SIGNIFICANT_DIGITS = 12
 
-#: Parameters of the checks, with the values used when a key is not given.
-DEFAULT_PARAMS: dict[str, Any] = {
-    "k_paper": 0.4,
-    "k_values": [0.05, 0.4, 0.6666666666666666, 1.0],
-    "mu0_range": [1.0e-6, 1.0e6],
-    "n_points": 241,
-    "mu0_probe": [1.0e-4, 1.0e-2, 0.1, 1.0, 10.0, 1.0e3, 1.0e6],
-    "mu0_small": [1.0e-6, 1.0e-8, 1.0e-10],
-    "mu0_reference": [0.1, 1.0, 10.0],
-    "mu0_fig3": [0.1, 1.0],
-    "mu0_spiral": [0.02, 0.0793, 0.3, 1.0, 10.0],
-    "mu0_limit": [10.0, 100.0, 1000.0, 10000.0],
-    "mu0_newton_euler": 0.5,
-    "t_newton_euler": 4.0,
-    "t_limit": 10.0,
-    "state_fig3": [1.0, 1.0, 0.0, 0.0, 0.0, 0.0],
-    "state_fig4": [1.0, 1.0, 0.0, 0.0, 0.0, 1.0],
-    "n_states": 4,
-    "seed": 20190206,
-}
+#: The JSON schema of the check parameters (package data): the one source of their
+#: defaults and of their validation; the workflow's configuration schema refers to it.
+PARAMS_SCHEMA_FILE = "params.schema.yaml"
 
 
-def _fail(key: str, what: str, value: Any) -> None:
-    raise ValueError(f"params[{key!r}] must be {what}; got {value!r}")
+@functools.cache
+def params_schema() -> dict[str, Any]:
+    """Return the JSON schema of the check parameters, read from the package data."""
+    text = resources.files("turntable.claims").joinpath(PARAMS_SCHEMA_FILE).read_text("utf-8")
+    schema: dict[str, Any] = yaml.safe_load(text)
+    return schema
 
 
-def _positive(key: str, value: Any) -> float:
-    ok = isinstance(value, (int, float)) and not isinstance(value, bool)
-    if not ok or not math.isfinite(value) or value <= 0:
-        _fail(key, "a finite number > 0", value)
+def _defaults() -> dict[str, Any]:
+    return {key: prop["default"] for key, prop in params_schema()["properties"].items()}
+
+
+#: Parameters of the checks with the values used when a key is not given: the ``default``
+#: of each property of the schema (read-only view; edit the schema to change one).
+DEFAULT_PARAMS: Mapping[str, Any] = MappingProxyType(_defaults())
+
+
+def _is_int(checker: Any, value: Any) -> bool:
+    # JSON Schema counts 400.0 as an integer; a count must be a Python int.
+    return isinstance(value, int) and not isinstance(value, bool)
+
+
+_VALIDATOR = jsonschema.validators.extend(
+    jsonschema.Draft202012Validator,
+    type_checker=jsonschema.Draft202012Validator.TYPE_CHECKER.redefine("integer", _is_int),
+)
+
+
+def _property_type(prop: Mapping[str, Any]) -> str:
+    ref = prop.get("$ref", "")
+    if "type" not in prop and ref.startswith("#/$defs/"):
+        return _property_type(params_schema()["$defs"][ref.removeprefix("#/$defs/")])
+    return str(prop.get("type", ""))
+
+
+def _as_float(value: Any) -> Any:
+    if isinstance(value, (list, tuple)):
+        return [_as_float(v) for v in value]
     return float(value)
-
-
-def _positive_list(key: str, value: Any, *, min_items: int = 1) -> list[float]:
-    if not isinstance(value, (list, tuple)) or len(value) < min_items:
-        _fail(key, f"a list of at least {min_items} finite numbers > 0", value)
-    return [_positive(f"{key}[{i}]", v) for i, v in enumerate(value)]
-
-
-def _integer(key: str, value: Any, low: int, high: int) -> int:
-    if not isinstance(value, int) or isinstance(value, bool) or not low <= value <= high:
-        _fail(key, f"an integer in [{low}, {high}]", value)
-    return int(value)
-
-
-def _state(key: str, value: Any) -> list[float]:
-    if not isinstance(value, (list, tuple)) or len(value) != 6:
-        _fail(key, "six finite numbers [x, y, vx, vy, wx, wy]", value)
-    out = []
-    for v in value:
-        if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
-            _fail(key, "six finite numbers [x, y, vx, vy, wx, wy]", value)
-        out.append(float(v))
-    return out
 
 
 def resolve_params(params: Mapping[str, Any] | None = None) -> dict[str, Any]:
     """Return the check parameters: ``params`` over `DEFAULT_PARAMS`, validated.
+
+    The defaults and the rules (types, bounds, lengths) are those of the JSON schema
+    ``params.schema.yaml`` of this package (see `params_schema`), the same the workflow
+    validates the ``claims:`` section of ``config/config.yaml`` against; an integer must
+    be an ``int`` (not ``400.0``). The one rule a schema cannot express is added here:
+    ``mu0_range`` is increasing.
 
     Parameters
     ----------
@@ -86,42 +87,34 @@ def resolve_params(params: Mapping[str, Any] | None = None) -> dict[str, Any]:
     Returns
     -------
     dict
-        Every key of `DEFAULT_PARAMS`, with floats, ints and lists of floats.
+        Every key of `DEFAULT_PARAMS`; numbers as floats, counts as ints.
 
     Raises
     ------
     ValueError
         For an unknown key or a value of the wrong type or range; the message
-        names the key.
+        names the key and what the schema expects.
     """
-    given = dict(params or {})
-    unknown = sorted(set(given) - set(DEFAULT_PARAMS))
-    if unknown:
-        raise ValueError(f"unknown claims parameter(s) {unknown}; known: {sorted(DEFAULT_PARAMS)}")
-    p = {**DEFAULT_PARAMS, **given}
-    out: dict[str, Any] = {}
-    out["k_paper"] = _positive("k_paper", p["k_paper"])
-    out["k_values"] = _positive_list("k_values", p["k_values"])
-    grid = _positive_list("mu0_range", p["mu0_range"], min_items=2)
-    if len(grid) != 2 or not grid[0] < grid[1]:
-        _fail("mu0_range", "[low, high] with 0 < low < high", p["mu0_range"])
-    out["mu0_range"] = grid
-    out["n_points"] = _integer("n_points", p["n_points"], 16, 100000)
-    for key in ("mu0_probe", "mu0_reference", "mu0_fig3", "mu0_spiral"):
-        out[key] = _positive_list(key, p[key])
-    out["mu0_small"] = _positive_list("mu0_small", p["mu0_small"], min_items=2)
-    if max(out["mu0_small"]) > 1e-3:
-        _fail("mu0_small", "a list of at least two values <= 1e-3", p["mu0_small"])
-    out["mu0_limit"] = _positive_list("mu0_limit", p["mu0_limit"], min_items=3)
-    if min(out["mu0_limit"]) < 1.0:
-        _fail("mu0_limit", "a list of at least three values >= 1", p["mu0_limit"])
-    for key in ("mu0_newton_euler", "t_newton_euler", "t_limit"):
-        out[key] = _positive(key, p[key])
-    out["state_fig3"] = _state("state_fig3", p["state_fig3"])
-    out["state_fig4"] = _state("state_fig4", p["state_fig4"])
-    out["n_states"] = _integer("n_states", p["n_states"], 1, 100)
-    out["seed"] = _integer("seed", p["seed"], 0, 2**32 - 1)
-    return out
+    p = {**_defaults(), **dict(params or {})}
+    schema = params_schema()
+    errors = sorted(_VALIDATOR(schema).iter_errors(p), key=lambda e: list(e.absolute_path))
+    if errors:
+        err = errors[0]
+        path = "".join(f"[{x!r}]" for x in err.absolute_path) or ""
+        if err.validator == "additionalProperties":
+            known = sorted(schema["properties"])
+            raise ValueError(f"unknown claims parameter(s): {err.message}; known: {known}")
+        described = schema["properties"].get(err.absolute_path[0], {}).get("description", "")
+        raise ValueError(f"params{path}: {err.message} (expected: {described.strip()})")
+    low, high = p["mu0_range"]
+    if not low < high:
+        raise ValueError(
+            f"params['mu0_range'] must be [low, high] with low < high; got {low, high}"
+        )
+    return {
+        key: (value if _property_type(schema["properties"][key]) == "integer" else _as_float(value))
+        for key, value in p.items()
+    }
 
 
 def mu0_grid(params: Mapping[str, Any]) -> NDArray[np.float64]:
@@ -156,23 +149,61 @@ class Where:
         return ", ".join(p for p in parts if p)
 
 
+#: Relations a tolerance can state between a reproduced value and its bound.
+RELATIONS: dict[str, Callable[[float, float], bool]] = {
+    "<=": lambda x, b: x <= b,
+    "<": lambda x, b: x < b,
+    ">=": lambda x, b: x >= b,
+    ">": lambda x, b: x > b,
+    "==": lambda x, b: x == b,
+}
+
+
+def split_bound(bound: Any) -> tuple[str, Any]:
+    """Return (relation, limit) of a tolerance entry: a number means ``<=``."""
+    if isinstance(bound, Mapping):
+        if len(bound) != 1 or next(iter(bound)) not in RELATIONS:
+            raise ValueError(f"a bound is a number or {{relation: limit}}; got {bound!r}")
+        return next(iter(bound.items()))
+    return "<=", bound
+
+
+def within(value: Any, bound: Any) -> bool:
+    """Return whether a reproduced value (or every element of a list of them) meets its bound.
+
+    ``bound`` is a number (the value must be at most that) or a one-entry mapping
+    ``{relation: limit}`` with a relation of `RELATIONS`, e.g. ``{">": 0.0}``.
+    """
+    relation, limit = split_bound(bound)
+    if isinstance(value, (list, tuple, np.ndarray)):
+        return all(within(v, bound) for v in value)
+    return bool(RELATIONS[relation](value, limit))
+
+
+def all_within(reproduced: Mapping[str, Any], tolerance: Mapping[str, Any]) -> bool:
+    """Return whether every reproduced value named in ``tolerance`` meets its bound."""
+    return all(within(reproduced[key], bound) for key, bound in tolerance.items())
+
+
 @dataclass(frozen=True)
 class Outcome:
     """What a check function returns.
 
     Attributes
     ----------
-    verdict : {"confirmed", "refined", "failed"}
-        Decided from the numbers in ``reproduced``.
+    verdict : str
+        One of `VERDICTS`, decided from the numbers in ``reproduced``.
     reproduced : dict
         Named reproduced values (floats, ints, bools, strings, lists, dicts).
     tolerance : dict
-        Named tolerances against which the verdict was decided.
+        The bounds against which the verdict was decided, under the key of the
+        reproduced value each bounds: a number (the value is at most that) or
+        ``{relation: limit}`` (see `within`). Every key is a key of ``reproduced``.
     summary : str
         One line for the table: the main reproduced numbers.
     evidence : str
         Why the verdict is what it is; for ``refined``, the precise form that
-        holds.
+        holds; for ``corrected``, the corrected formula.
     """
 
     verdict: Verdict
@@ -180,6 +211,13 @@ class Outcome:
     tolerance: dict[str, Any]
     summary: str
     evidence: str
+
+    def __post_init__(self) -> None:
+        missing = sorted(set(self.tolerance) - set(self.reproduced))
+        if missing:
+            raise ValueError(f"tolerance keys without a reproduced value: {missing}")
+        for bound in self.tolerance.values():
+            split_bound(bound)
 
 
 @dataclass(frozen=True)
@@ -191,16 +229,21 @@ class Claim:
     id : str
         Stable identifier, e.g. ``"solution.centre"``.
     where : Where
-        Section, equations and figure of the paper.
+        Section, equations and figure of the paper (for an addition of the
+        reproduction: what in the paper it builds on).
     claim : str
         The claim in one sentence.
-    paper_value : dict or None
-        What the paper states numerically (``{"text": ..., <name>: <number>}``),
-        or None when the paper states no number.
+    paper_value : dict
+        What the paper states (``{"text": ..., <name>: <number>}``): a number, an
+        inequality, a formula or a qualitative statement; for an addition, what
+        the paper states that it builds on.
     method : str
         How the check computes its reproduced values.
     check : callable
         ``check(params) -> Outcome``.
+    expected : str
+        The verdict the check is expected to reach with the configured parameters
+        (one of `VERDICTS`); the tests require exactly this verdict.
     source : str
         ``"paper"`` for a claim of the paper, ``"project"`` for one the
         reproduction adds.
@@ -209,10 +252,17 @@ class Claim:
     id: str
     where: Where
     claim: str
-    paper_value: dict[str, Any] | None
+    paper_value: dict[str, Any]
     method: str
     check: Callable[[dict[str, Any]], Outcome] = field(repr=False)
+    expected: Verdict = "confirmed"
     source: str = "paper"
+
+    def label(self) -> str:
+        """Return the location; an addition of the reproduction is marked as such."""
+        if self.source == "project":
+            return f"added by the reproduction (builds on {self.where.label()})"
+        return self.where.label()
 
 
 _REGISTRY: dict[str, Claim] = {}
@@ -223,16 +273,28 @@ def register(
     *,
     where: Where,
     claim: str,
-    paper_value: dict[str, Any] | None,
+    paper_value: dict[str, Any],
     method: str,
+    expected: Verdict,
     source: str = "paper",
 ) -> Callable[[Callable[[dict[str, Any]], Outcome]], Callable[[dict[str, Any]], Outcome]]:
-    """Decorator that adds a check function to the registry under ``id``."""
+    """Decorator that adds a check function to the registry under ``id``.
+
+    The order of registration is the order of the report (the paper's order): the
+    check modules are imported in the paper's order and register their claims in it.
+    ``expected`` is the verdict the tests require of the check.
+    """
+    if expected not in VERDICTS:
+        raise ValueError(f"expected verdict of {id!r} must be one of {VERDICTS}; got {expected!r}")
+    if source not in ("paper", "project"):
+        raise ValueError(f"source of {id!r} must be 'paper' or 'project'; got {source!r}")
+    if not paper_value or not paper_value.get("text"):
+        raise ValueError(f"paper_value of {id!r} must state what the paper says, as 'text'")
 
     def wrap(fn: Callable[[dict[str, Any]], Outcome]) -> Callable[[dict[str, Any]], Outcome]:
         if id in _REGISTRY:
             raise ValueError(f"claim id {id!r} registered twice")
-        _REGISTRY[id] = Claim(id, where, claim, paper_value, method, fn, source)
+        _REGISTRY[id] = Claim(id, where, claim, paper_value, method, fn, expected, source)
         return fn
 
     return wrap

@@ -16,7 +16,18 @@ from typing import Any
 
 import turntable
 from turntable.claims import VERDICTS, evaluate_all, resolve_params
-from turntable.claims._core import clean
+from turntable.claims._core import clean, split_bound
+
+#: What each verdict means, in the words of the report (README and article say the same).
+VERDICT_MEANINGS: dict[str, str] = {
+    "confirmed": "the claim holds as stated",
+    "refined": "it holds in a narrower or more precise form, stated in the evidence",
+    "corrected": (
+        "a formula the paper prints is wrong; the evidence states the right one (an erratum)"
+    ),
+    "undecidable": ("whether it holds depends on values the paper does not give; never confirmed"),
+    "failed": "the numbers contradict it",
+}
 
 #: Version of the layout of ``claims.json``.
 SCHEMA_VERSION = 1
@@ -39,6 +50,16 @@ def git_commit(cwd: str | Path | None = None) -> str:
     return commit if len(commit) == 40 else "unknown"
 
 
+def summarize(records: list[Mapping[str, Any]]) -> dict[str, Any]:
+    """Count the records per verdict and per source, and list the ids of each verdict."""
+    counts: dict[str, Any] = {v: sum(r["verdict"] == v for r in records) for v in VERDICTS}
+    counts["total"] = len(records)
+    for source in ("paper", "project"):
+        counts[source] = sum(r["source"] == source for r in records)
+    counts["ids"] = {v: [r["id"] for r in records if r["verdict"] == v] for v in VERDICTS}
+    return counts
+
+
 def build_report(
     params: Mapping[str, Any] | None = None, *, commit: str = "unknown"
 ) -> dict[str, Any]:
@@ -59,8 +80,7 @@ def build_report(
     """
     p = resolve_params(params)
     records = evaluate_all(p)
-    counts = {v: sum(r["verdict"] == v for r in records) for v in VERDICTS}
-    counts["total"] = len(records)
+    counts = summarize(records)
     return clean(
         {
             "schema": SCHEMA_VERSION,
@@ -90,15 +110,49 @@ def _paper_value(value: Mapping[str, Any] | None) -> str:
     return str(value.get("text", "-"))
 
 
+def summary_line(summary: Mapping[str, Any]) -> str:
+    """Return the counts of a report in words, naming every claim that is not confirmed.
+
+    Every verdict is counted, the paper's claims apart from the reproduction's additions,
+    and the ids of corrected, undecidable and failed claims are named, so that a count of
+    0 failed never hides an erratum.
+    """
+    counts = ", ".join(f"{summary[v]} {v}" for v in VERDICTS)
+    text = (
+        f"{summary['total']} claims ({summary['paper']} of the paper, {summary['project']} "
+        f"added by the reproduction): {counts}."
+    )
+    for v in ("corrected", "undecidable", "failed"):
+        if summary["ids"][v]:
+            text += f" {v.capitalize()}: " + ", ".join(f"`{i}`" for i in summary["ids"][v]) + "."
+    return text
+
+
+def _bound_text(bound: Any) -> str:
+    relation, limit = split_bound(bound)
+    return f"{relation} {limit}"
+
+
+def values_and_bounds(claim: Mapping[str, Any]) -> str:
+    """Return ``key = value (bound)`` for every reproduced value that has a tolerance."""
+    return "; ".join(
+        f"`{key}` = {claim['reproduced'][key]} ({_bound_text(bound)})"
+        for key, bound in claim["tolerance"].items()
+    )
+
+
 def to_markdown(report: Mapping[str, Any]) -> str:
     """Render a report as a Markdown document with one table row per claim."""
-    s = report["summary"]
     lines = [
         "# Claims of Ivanova (2019) and their reproduction",
         "",
         f"turntable {report['version']}, commit `{report['git_commit']}`. "
-        f"{s['total']} claims: {s['confirmed']} confirmed, {s['refined']} refined, "
-        f"{s['failed']} failed.",
+        + summary_line(report["summary"]),
+        "",
+        "Verdicts: "
+        + "; ".join(f"**{v}**: {VERDICT_MEANINGS[v]}" for v in VERDICTS)
+        + ". Claims added by the reproduction (not the paper's) are marked *(addition)*; "
+        "their location says what in the paper they build on.",
         "",
         "| id | where | claim | paper's value | reproduced | verdict |",
         "|---|---|---|---|---|---|",
@@ -110,7 +164,7 @@ def to_markdown(report: Mapping[str, Any]) -> str:
             + " | ".join(
                 _cell(x)
                 for x in (
-                    f"`{cid}`",
+                    f"`{cid}`" + (" *(addition)*" if c["source"] == "project" else ""),
                     c["where"]["label"],
                     c["claim"],
                     _paper_value(c["paper_value"]),
@@ -124,6 +178,10 @@ def to_markdown(report: Mapping[str, Any]) -> str:
     for cid in report["order"]:
         c = report["claims"][cid]
         lines.append(f"- `{cid}` ({c['verdict']}): {_cell(c['evidence'])}")
+    lines += ["", "## Reproduced values and their bounds", ""]
+    for cid in report["order"]:
+        c = report["claims"][cid]
+        lines.append(f"- `{cid}`: {_cell(values_and_bounds(c))}")
     lines += ["", "## Methods", ""]
     for cid in report["order"]:
         c = report["claims"][cid]

@@ -18,6 +18,7 @@ from typing import Any
 import mpmath
 import numpy as np
 import pytest
+import scipy.linalg
 import yaml
 
 import turntable
@@ -28,6 +29,8 @@ ROOT = Path(__file__).resolve().parents[1]
 
 #: The claim identifiers listed in the project's notes on the paper.
 PAPER_IDS = {
+    "intro.no_slip_motion",
+    "model.scaling",
     "model.reduction",
     "model.rubber_ball",
     "spectrum.char_poly",
@@ -43,15 +46,18 @@ PAPER_IDS = {
     "limit.expansion",
     "limit.frequency",
     "limit.convergence",
+    "limit.realization",
 }
 
 #: Claims whose statement holds only in a narrower form; every other claim is confirmed.
 REFINED_IDS = {
+    "intro.no_slip_motion",
     "solution.centre",
     "solution.damping_ratio",
     "solution.fast_transient",
     "trajectory.untwisting_slows",
     "limit.convergence",
+    "limit.realization",
 }
 
 FIELDS = {
@@ -142,6 +148,10 @@ def test_unknown_claim_id_names_the_argument() -> None:
         ("state_fig4", [1.0, 1.0, 0.0]),
         ("mu0_small", [1.0e-6, 0.5]),
         ("seed", True),
+        ("turntable_rpm", [33.0]),
+        ("turntable_rpm", [33.0, 33.0]),
+        ("state_si", [0.0, 0.0, 0.0, 0.0, 0.0, 0.0]),
+        ("ball_radius", -0.01),
         ("no_such_key", 1),
     ],
 )
@@ -250,6 +260,74 @@ def test_wrong_no_slip_rate_fails(monkeypatch: pytest.MonkeyPatch) -> None:
     params = SMALL
     assert claims.evaluate("limit.frequency", params)["verdict"] == "failed"
     assert claims.evaluate("limit.convergence", params)["verdict"] == "failed"
+    assert claims.evaluate("intro.no_slip_motion", params)["verdict"] == "failed"
+
+
+def test_wrong_contact_force_of_rolling_fails(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A no-slip reference built with the inertia ratio off by half."""
+    from turntable.claims import _constrained as con
+
+    exact = con.no_slip_matrix
+
+    def wrong(k: float) -> np.ndarray:
+        return exact(1.5 * k)
+
+    monkeypatch.setattr(con, "no_slip_matrix", wrong)
+    assert claims.evaluate("intro.no_slip_motion", SMALL)["verdict"] == "failed"
+    assert claims.evaluate("limit.realization", SMALL)["verdict"] == "failed"
+
+
+def test_rolling_without_contact_force_fails(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The motion on u = 0 without the force that keeps it there is not the limit."""
+    from turntable.claims import _constrained as con
+
+    def free(k: float) -> np.ndarray:
+        big = np.zeros((6, 6))
+        big[0:2, 2:4] = np.eye(2)
+        return big
+
+    monkeypatch.setattr(con, "no_slip_matrix", free)
+    assert claims.evaluate("limit.realization", SMALL)["verdict"] == "failed"
+
+
+def test_orthogonal_projection_is_not_the_state_after_the_layer(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    from turntable.claims import _constrained as con
+
+    def orthogonal(k: float) -> np.ndarray:
+        basis = scipy.linalg.null_space(con.slip_matrix())
+        return basis @ basis.T
+
+    monkeypatch.setattr(con, "no_slip_projection", orthogonal)
+    assert claims.evaluate("limit.realization", SMALL)["verdict"] == "failed"
+
+
+@pytest.mark.parametrize(
+    "wrong",
+    [
+        pytest.param(lambda c, m, om: c / m, id="without-Omega"),
+        pytest.param(lambda c, m, om: c / (m * om**2), id="Omega-squared"),
+        pytest.param(lambda c, m, om: 1.01 * c / (m * om), id="one-percent-off"),
+    ],
+)
+def test_wrong_friction_scaling_fails(monkeypatch: pytest.MonkeyPatch, wrong: Any) -> None:
+    from turntable.claims import _checks_intro
+
+    monkeypatch.setattr(_checks_intro, "dimensionless_friction", wrong)
+    assert claims.evaluate("model.scaling", SMALL)["verdict"] == "failed"
+
+
+def test_wrong_torque_arm_of_the_dimensional_model_fails(monkeypatch: pytest.MonkeyPatch) -> None:
+    from turntable.claims import _checks_intro
+
+    exact = _checks_intro.dimensional_matrix
+
+    def wrong(friction: float, mass: float, inertia: float, radius: float, omega: float):
+        return exact(friction, mass, inertia * 1.1, radius, omega)  # torque arm off by 10 %
+
+    monkeypatch.setattr(_checks_intro, "dimensional_matrix", wrong)
+    assert claims.evaluate("model.scaling", SMALL)["verdict"] == "failed"
 
 
 # Reports -------------------------------------------------------------------------------

@@ -30,7 +30,12 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-from turntable.claims import _checks_limit, _checks_solution, _checks_spectrum  # noqa: F401
+from turntable.claims import (  # noqa: F401
+    _checks_intro,
+    _checks_limit,
+    _checks_solution,
+    _checks_spectrum,
+)
 from turntable.claims._core import (
     DEFAULT_PARAMS,
     VERDICTS,
@@ -45,6 +50,8 @@ from turntable.claims._core import (
 
 #: Claim identifiers in the order of the paper.
 ORDER: tuple[str, ...] = (
+    "intro.no_slip_motion",
+    "model.scaling",
     "model.reduction",
     "model.rubber_ball",
     "spectrum.char_poly",
@@ -62,6 +69,7 @@ ORDER: tuple[str, ...] = (
     "limit.expansion",
     "limit.frequency",
     "limit.convergence",
+    "limit.realization",
 )
 
 _BY_ID: dict[str, Claim] = {c.id: c for c in registered()}

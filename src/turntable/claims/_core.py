@@ -37,6 +37,12 @@ DEFAULT_PARAMS: dict[str, Any] = {
     "state_fig4": [1.0, 1.0, 0.0, 0.0, 0.0, 1.0],
     "n_states": 4,
     "seed": 20190206,
+    "ball_radius": 0.01,
+    "ball_density": 7850.0,
+    "friction_viscous": 0.1,
+    "turntable_rpm": [33.333333333333336, 45.0, 78.0],
+    "state_si": [0.1, 0.0, 0.0, 0.0, 0.0, 0.0],
+    "scaling_turns": 10.0,
 }
 
 
@@ -121,6 +127,14 @@ def resolve_params(params: Mapping[str, Any] | None = None) -> dict[str, Any]:
     out["state_fig4"] = _state("state_fig4", p["state_fig4"])
     out["n_states"] = _integer("n_states", p["n_states"], 1, 100)
     out["seed"] = _integer("seed", p["seed"], 0, 2**32 - 1)
+    for key in ("ball_radius", "ball_density", "friction_viscous", "scaling_turns"):
+        out[key] = _positive(key, p[key])
+    out["turntable_rpm"] = _positive_list("turntable_rpm", p["turntable_rpm"], min_items=2)
+    if len(set(out["turntable_rpm"])) != len(out["turntable_rpm"]):
+        _fail("turntable_rpm", "a list of at least two different rates", p["turntable_rpm"])
+    out["state_si"] = _state("state_si", p["state_si"])
+    if not any(out["state_si"]):
+        _fail("state_si", "a state other than 0 (m, m/s, rad/s)", p["state_si"])
     return out
 
 

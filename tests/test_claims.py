@@ -330,6 +330,55 @@ def test_wrong_torque_arm_of_the_dimensional_model_fails(monkeypatch: pytest.Mon
     assert claims.evaluate("model.scaling", SMALL)["verdict"] == "failed"
 
 
+@pytest.mark.parametrize(
+    "error",
+    [pytest.param(1e-5, id="rates-off-1e-5"), pytest.param(3e-9, id="rates-off-3e-9")],
+)
+def test_spiral_with_wrong_rates_fails(monkeypatch: pytest.MonkeyPatch, error: float) -> None:
+    """Predicted alpha1 and beta off by a small relative error: the fits must notice."""
+    from turntable.claims import _reference as ref
+
+    exact = ref.float_spectrum
+
+    def off(matrix: np.ndarray) -> ref.MpSpectrum:
+        e = exact(matrix)
+        return e._replace(alpha1=e.alpha1 * (1 + error), beta=e.beta * (1 + error))
+
+    monkeypatch.setattr(ref, "float_spectrum", off)
+    result = claims.evaluate("trajectory.spiral", SMALL)
+    assert result["verdict"] == "failed"
+
+
+def test_spiral_about_a_misplaced_centre_fails(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A spiral centre 1e-3 away from (x0, y0) makes the distance oscillate: not a log spiral."""
+    from turntable.claims import _reference as ref
+
+    exact = ref.kernel_projection
+
+    def shifted(matrix: np.ndarray, z0: Any) -> np.ndarray:
+        return exact(matrix, z0) + np.array([1e-3, 0.0])
+
+    monkeypatch.setattr(ref, "kernel_projection", shifted)
+    assert claims.evaluate("trajectory.spiral", SMALL)["verdict"] == "failed"
+
+
+def test_inward_spiral_fails(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A spiral winding in at rate alpha1 (the radius times exp(-2 alpha1 t)) must fail."""
+    from turntable.claims import _reference as ref
+
+    exact = ref.expm_solution
+
+    def inward(matrix: np.ndarray, z0: Any, t: Any) -> np.ndarray:
+        z = exact(matrix, z0, t)
+        rc = ref.kernel_projection(matrix, z0)
+        shrink = np.exp(-2.0 * ref.float_spectrum(matrix).alpha1 * np.asarray(t))
+        z[:, :2] = rc + (z[:, :2] - rc) * shrink[:, None]
+        return z
+
+    monkeypatch.setattr(ref, "expm_solution", inward)
+    assert claims.evaluate("trajectory.spiral", SMALL)["verdict"] == "failed"
+
+
 # Reports -------------------------------------------------------------------------------
 
 

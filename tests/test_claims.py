@@ -18,6 +18,7 @@ from typing import Any
 import mpmath
 import numpy as np
 import pytest
+import scipy.linalg
 import yaml
 
 import turntable
@@ -147,6 +148,10 @@ def test_unknown_claim_id_names_the_argument() -> None:
         ("mu0_small", [1.0e-6, 0.5]),
         ("seed", True),
         ("n_points", 400.0),
+        ("turntable_rpm", [33.0]),
+        ("turntable_rpm", [33.0, 33.0]),
+        ("state_si", [0.0, 0.0, 0.0, 0.0, 0.0, 0.0]),
+        ("ball_radius", -0.01),
         ("no_such_key", 1),
     ],
 )
@@ -259,6 +264,123 @@ def test_wrong_no_slip_rate_fails(monkeypatch: pytest.MonkeyPatch) -> None:
     params = SMALL
     assert claims.evaluate("limit.frequency", params)["verdict"] == "failed"
     assert claims.evaluate("limit.convergence", params)["verdict"] == "failed"
+    assert claims.evaluate("intro.no_slip_motion", params)["verdict"] == "failed"
+
+
+def test_wrong_contact_force_of_rolling_fails(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A no-slip reference built with the inertia ratio off by half."""
+    from turntable.claims import _constrained as con
+
+    exact = con.no_slip_matrix
+
+    def wrong(k: float) -> np.ndarray:
+        return exact(1.5 * k)
+
+    monkeypatch.setattr(con, "no_slip_matrix", wrong)
+    assert claims.evaluate("intro.no_slip_motion", SMALL)["verdict"] == "failed"
+    assert claims.evaluate("limit.realization", SMALL)["verdict"] == "failed"
+
+
+def test_rolling_without_contact_force_fails(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The motion on u = 0 without the force that keeps it there is not the limit."""
+    from turntable.claims import _constrained as con
+
+    def free(k: float) -> np.ndarray:
+        big = np.zeros((6, 6))
+        big[0:2, 2:4] = np.eye(2)
+        return big
+
+    monkeypatch.setattr(con, "no_slip_matrix", free)
+    assert claims.evaluate("limit.realization", SMALL)["verdict"] == "failed"
+
+
+def test_orthogonal_projection_is_not_the_state_after_the_layer(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    from turntable.claims import _constrained as con
+
+    def orthogonal(k: float) -> np.ndarray:
+        basis = scipy.linalg.null_space(con.slip_matrix())
+        return basis @ basis.T
+
+    monkeypatch.setattr(con, "no_slip_projection", orthogonal)
+    assert claims.evaluate("limit.realization", SMALL)["verdict"] == "failed"
+
+
+@pytest.mark.parametrize(
+    "wrong",
+    [
+        pytest.param(lambda c, m, om: c / m, id="without-Omega"),
+        pytest.param(lambda c, m, om: c / (m * om**2), id="Omega-squared"),
+        pytest.param(lambda c, m, om: 1.01 * c / (m * om), id="one-percent-off"),
+    ],
+)
+def test_wrong_friction_scaling_fails(monkeypatch: pytest.MonkeyPatch, wrong: Any) -> None:
+    from turntable.claims import _checks_intro
+
+    monkeypatch.setattr(_checks_intro, "dimensionless_friction", wrong)
+    assert claims.evaluate("model.scaling", SMALL)["verdict"] == "failed"
+
+
+def test_wrong_torque_arm_of_the_dimensional_model_fails(monkeypatch: pytest.MonkeyPatch) -> None:
+    from turntable.claims import _checks_intro
+
+    exact = _checks_intro.dimensional_matrix
+
+    def wrong(friction: float, mass: float, inertia: float, radius: float, omega: float):
+        return exact(friction, mass, inertia * 1.1, radius, omega)  # torque arm off by 10 %
+
+    monkeypatch.setattr(_checks_intro, "dimensional_matrix", wrong)
+    assert claims.evaluate("model.scaling", SMALL)["verdict"] == "failed"
+
+
+@pytest.mark.parametrize(
+    "error",
+    [pytest.param(1e-5, id="rates-off-1e-5"), pytest.param(3e-9, id="rates-off-3e-9")],
+)
+def test_spiral_with_wrong_rates_fails(monkeypatch: pytest.MonkeyPatch, error: float) -> None:
+    """Predicted alpha1 and beta off by a small relative error: the fits must notice."""
+    from turntable import reference as ref
+
+    exact = ref.float_spectrum
+
+    def off(matrix: np.ndarray) -> ref.MpSpectrum:
+        e = exact(matrix)
+        return e._replace(alpha1=e.alpha1 * (1 + error), beta=e.beta * (1 + error))
+
+    monkeypatch.setattr(ref, "float_spectrum", off)
+    result = claims.evaluate("trajectory.spiral", SMALL)
+    assert result["verdict"] == "failed"
+
+
+def test_spiral_about_a_misplaced_centre_fails(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A spiral centre 1e-3 away from (x0, y0) makes the distance oscillate: not a log spiral."""
+    from turntable import reference as ref
+
+    exact = ref.kernel_projection
+
+    def shifted(matrix: np.ndarray, z0: Any) -> np.ndarray:
+        return exact(matrix, z0) + np.array([1e-3, 0.0])
+
+    monkeypatch.setattr(ref, "kernel_projection", shifted)
+    assert claims.evaluate("trajectory.spiral", SMALL)["verdict"] == "failed"
+
+
+def test_inward_spiral_fails(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A spiral winding in at rate alpha1 (the radius times exp(-2 alpha1 t)) must fail."""
+    from turntable import reference as ref
+
+    exact = ref.expm_solution
+
+    def inward(matrix: np.ndarray, z0: Any, t: Any) -> np.ndarray:
+        z = exact(matrix, z0, t)
+        rc = ref.kernel_projection(matrix, z0)
+        shrink = np.exp(-2.0 * ref.float_spectrum(matrix).alpha1 * np.asarray(t))
+        z[:, :2] = rc + (z[:, :2] - rc) * shrink[:, None]
+        return z
+
+    monkeypatch.setattr(ref, "expm_solution", inward)
+    assert claims.evaluate("trajectory.spiral", SMALL)["verdict"] == "failed"
 
 
 def test_dimensional_spin_holds_for_another_ball(monkeypatch: pytest.MonkeyPatch) -> None:

@@ -112,6 +112,90 @@ def test_root_check_fails_on_a_wrong_root(monkeypatch: pytest.MonkeyPatch) -> No
     assert r["checks"]["roots"] is False
 
 
+# Each check of section2_checks must report failure on a wrong model ---------------------
+
+
+def _checks_with(monkeypatch: pytest.MonkeyPatch, name: str, wrong: object) -> dict[str, bool]:
+    """Run section2_checks with study.<name> replaced by ``wrong``; return its checks."""
+    monkeypatch.setattr(study, name, wrong)
+    return study.section2_checks(K_BALL, MU0, Z_FIG4, T)["checks"]
+
+
+@pytest.mark.parametrize(
+    "factor",
+    [pytest.param(0.75, id="ln-N-three-quarters"), pytest.param(1.0 - 1e-6, id="ln-N-just-low")],
+)
+def test_damping_bound_fails_when_ln_n_is_below_2pi(
+    monkeypatch: pytest.MonkeyPatch, factor: float
+) -> None:
+    """ln N = factor * 2 pi (above pi, below 2 pi) on the whole grid must break the bound."""
+    checks = _checks_with(
+        monkeypatch, "log_damping_ratio", lambda mu0, k: np.full(np.shape(mu0), factor * 2 * np.pi)
+    )
+    assert checks["damping_bound"] is False
+
+
+def test_damping_bound_fails_when_the_decay_is_slower_than_beta(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """abs(alpha2) / beta = 0.9 at one grid point (ln N left right) must break the bound."""
+    spectrum = study.spectrum
+
+    def slow_decay(mu0: np.ndarray, k: float) -> Spectrum:
+        s = spectrum(mu0, k)
+        return s._replace(alpha2=np.where(mu0 == mu0[3], -0.9 * s.beta, s.alpha2))
+
+    assert _checks_with(monkeypatch, "spectrum", slow_decay)["damping_bound"] is False
+
+
+@pytest.mark.parametrize("field", ["alpha1", "alpha2"])
+def test_unstable_focus_fails_on_one_wrong_sign(
+    monkeypatch: pytest.MonkeyPatch, field: str
+) -> None:
+    """alpha1 < 0 or alpha2 > 0 at one grid point (the last) breaks the check."""
+    spectrum = study.spectrum
+
+    def flipped(mu0: np.ndarray, k: float) -> Spectrum:
+        s = spectrum(mu0, k)
+        values = getattr(s, field)
+        return s._replace(**{field: np.where(mu0 == mu0[-1], -values, values)})
+
+    assert _checks_with(monkeypatch, "spectrum", flipped)["unstable_focus"] is False
+
+
+def test_per_turn_check_fails_on_the_growth_per_unit_time(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """2 pi alpha1 (per unit time, rising below the peak) in place of 2 pi alpha1/beta."""
+    spectrum = study.spectrum
+    wrong = lambda mu0, k: 2 * np.pi * spectrum(mu0, k).alpha1  # noqa: E731
+    assert _checks_with(monkeypatch, "log_growth_per_turn", wrong)["per_turn_decreasing"] is False
+
+
+def test_per_turn_check_fails_on_one_rise(monkeypatch: pytest.MonkeyPatch) -> None:
+    per_turn = study.log_growth_per_turn
+
+    def bump(mu0: np.ndarray, k: float) -> np.ndarray:
+        values = per_turn(mu0, k).copy()
+        values[10] = values[9] * (1.0 + 1e-9)
+        return values
+
+    assert _checks_with(monkeypatch, "log_growth_per_turn", bump)["per_turn_decreasing"] is False
+
+
+def test_peak_check_fails_on_a_peak_just_below_the_grid_maximum(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """A closed-form peak 1e-6 (relative) below the largest alpha1 on the grid."""
+    grid_max = float(np.max(study.spectrum(MU0, K_BALL).alpha1))
+    peak = study.alpha1_peak
+
+    def low(k: float) -> object:
+        return peak(k)._replace(alpha1=np.float64(grid_max * (1.0 - 1e-6)))
+
+    assert _checks_with(monkeypatch, "alpha1_peak", low)["peak_bound"] is False
+
+
 def test_summary_lists_failures(ball: dict) -> None:
     bad = dict(ball, checks=dict(ball["checks"], damping_bound=False))
     s = study.summarize([ball, bad])

@@ -4,12 +4,13 @@ Usage::
 
     .venv/bin/python tools/mutants.py [--fast] [--only NAME ...]
 
-For each mutant below, ``src/`` and the model-core tests are copied into a
-temporary directory, the mutation is applied to the copy as a text
-substitution (it is an error if the text does not occur exactly as often as
-expected), and pytest runs the tests against the copy
-(``PYTHONPATH=<tmp>/src``, ``-p no:cacheprovider -n 2``).  The unmutated
-copy is run first and must pass.  The script prints, for each mutant, the
+For each mutant below, ``src/`` and the mutant's tests (by default the
+model-core tests) are copied into a temporary directory, the mutation is
+applied to the copy as a text substitution (it is an error if the text does
+not occur exactly as often as expected), and pytest runs the tests against
+the copy (``PYTHONPATH=<tmp>/src``, ``-p no:cacheprovider -n 2``, and the
+mutant's ``-k`` expression if it has one).  The unmutated copy is run first,
+once for each set of tests, and must pass.  The script prints, for each mutant, the
 tests that failed, and exits with status 1 if any mutant survives (no test
 failed) or if the baseline fails.
 
@@ -43,6 +44,14 @@ OWN_TESTS = (
 )
 
 
+#: Tests of the parameter study, without the one that plans the whole workflow.
+STUDY_TESTS = ("test_study.py",)
+STUDY_KEYWORD = "not slurm"
+
+#: Tests of the claims registry.
+CLAIMS_TESTS = ("test_claims.py",)
+
+
 @dataclass(frozen=True)
 class Mutant:
     """A named set of text substitutions in files under src/turntable/."""
@@ -50,6 +59,8 @@ class Mutant:
     name: str
     description: str
     edits: tuple[tuple[str, str, str, int], ...]  # (file, old, new, expected count)
+    tests: tuple[str, ...] = OWN_TESTS  # test files (under tests/) that must kill it
+    keyword: str = ""  # pytest -k expression; "" runs every test of those files
 
 
 MUTANTS = [
@@ -154,24 +165,98 @@ MUTANTS = [
         "no-slip period 2 pi (k + 2) / k instead of 2 pi (k + 1) / k (nonholonomic_period)",
         (("limits.py", "2.0 * np.pi * (k + 1.0) / k", "2.0 * np.pi * (k + 2.0) / k", 1),),
     ),
+    # The checks of the parameter study and of the claims registry: a weakened check must be
+    # caught by a test that feeds it a wrong model (issue 8, gaps iii and iv).
+    Mutant(
+        "study-bound-pi",
+        "the damping bound of study.section2_checks tested as ln N > pi instead of 2 pi",
+        (("study.py", "np.all(log_n > 2.0 * np.pi)", "np.all(log_n > np.pi)", 1),),
+        STUDY_TESTS,
+        STUDY_KEYWORD,
+    ),
+    Mutant(
+        "study-focus-or",
+        "unstable focus of study.section2_checks: alpha2 < 0 OR alpha1 > 0",
+        (
+            (
+                "study.py",
+                "(s.alpha2 < 0.0) & (s.alpha1 > 0.0)",
+                "(s.alpha2 < 0.0) | (s.alpha1 > 0.0)",
+                1,
+            ),
+        ),
+        STUDY_TESTS,
+        STUDY_KEYWORD,
+    ),
+    Mutant(
+        "study-per-turn-any",
+        "growth per turn of study.section2_checks: decreasing somewhere instead of everywhere",
+        (("study.py", "np.all(np.diff(per_turn) < 0.0)", "np.any(np.diff(per_turn) < 0.0)", 1),),
+        STUDY_TESTS,
+        STUDY_KEYWORD,
+    ),
+    Mutant(
+        "study-peak-tolerance",
+        "peak bound of study.section2_checks with a tolerance of 1e-3 instead of TOL",
+        (("study.py", "float(peak.alpha1) * (1.0 + TOL)", "float(peak.alpha1) * (1.0 + 1e-3)", 1),),
+        STUDY_TESTS,
+        STUDY_KEYWORD,
+    ),
+    Mutant(
+        "spiral-tolerance",
+        "tolerances of the trajectory.spiral check loosened a millionfold",
+        (
+            (
+                "claims/_checks_solution.py",
+                '"max_growth_rate_error_rel": 1e-6,\n        "max_angular_rate_error_rel": 1e-9,',
+                '"max_growth_rate_error_rel": 1.0,\n        "max_angular_rate_error_rel": 1e-3,',
+                1,
+            ),
+        ),
+        CLAIMS_TESTS,
+        "spiral",
+    ),
+    Mutant(
+        "no-slip-torque-sign",
+        "the contact force of rolling without slipping turns the ball the wrong way "
+        "(claims reference of intro.no_slip_motion and limit.realization)",
+        (("claims/_constrained.py", "-(_J @ force) / k", "(_J @ force) / k", 1),),
+        CLAIMS_TESTS,
+        "no_slip_motion or realization",
+    ),
+    Mutant(
+        "scaling-without-omega",
+        "the dimensionless friction taken as mu0_dim / m instead of mu0_dim / (m Omega)",
+        (
+            (
+                "claims/_checks_intro.py",
+                "return friction / (mass * omega)",
+                "return friction / mass",
+                1,
+            ),
+        ),
+        CLAIMS_TESTS,
+        "scaling",
+    ),
 ]
 
 
-def _own_tests() -> list[Path]:
-    return [ROOT / "tests" / name for name in OWN_TESTS]
-
-
-def _prepare(tmp: Path) -> list[str]:
-    """Copy src/, the model-core tests and pyproject.toml into tmp; return the test paths."""
+def _prepare(tmp: Path, names: tuple[str, ...]) -> list[str]:
+    """Copy src/, the tests ``names`` with the helpers they import, config/, workflow/ and
+    pyproject.toml into tmp; return the test paths."""
     shutil.copytree(
         ROOT / "src", tmp / "src", ignore=shutil.ignore_patterns("__pycache__", "*.egg-info")
     )
+    for folder in ("config", "workflow"):  # read by some tests (the claims configuration)
+        shutil.copytree(ROOT / folder, tmp / folder)
     (tmp / "tests").mkdir()
-    shutil.copy2(ROOT / "tests" / "conftest.py", tmp / "tests" / "conftest.py")
+    for helper in (ROOT / "tests").glob("*.py"):  # conftest.py, reference.py, ...
+        if not helper.name.startswith("test_"):
+            shutil.copy2(helper, tmp / "tests" / helper.name)
     tests = []
-    for path in _own_tests():
-        shutil.copy2(path, tmp / "tests" / path.name)
-        tests.append(f"tests/{path.name}")
+    for name in names:
+        shutil.copy2(ROOT / "tests" / name, tmp / "tests" / name)
+        tests.append(f"tests/{name}")
     shutil.copy2(ROOT / "pyproject.toml", tmp / "pyproject.toml")
     return tests
 
@@ -189,7 +274,7 @@ def _apply(tmp: Path, mutant: Mutant) -> None:
         path.write_text(text.replace(old, new))
 
 
-def _run(tmp: Path, tests: list[str], fast: bool) -> tuple[int, list[str], float]:
+def _run(tmp: Path, tests: list[str], fast: bool, keyword: str) -> tuple[int, list[str], float]:
     """Run pytest in tmp against tmp/src; return (exit code, failed test ids, seconds)."""
     env = dict(os.environ, PYTHONPATH=str(tmp / "src"), PYTHONDONTWRITEBYTECODE="1")
     check = subprocess.run(
@@ -205,6 +290,7 @@ def _run(tmp: Path, tests: list[str], fast: bool) -> tuple[int, list[str], float
     report = tmp / "report.xml"
     cmd = [sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "-q", "-n", "2"]
     cmd += ["--junitxml", str(report), *(["-x"] if fast else []), *tests]
+    cmd += ["-k", keyword] if keyword else []
     start = time.perf_counter()
     proc = subprocess.run(cmd, env=env, cwd=tmp, capture_output=True, text=True, check=False)
     seconds = time.perf_counter() - start
@@ -242,23 +328,26 @@ def main(argv: list[str] | None = None) -> int:
 
     with tempfile.TemporaryDirectory(prefix="turntable-mutants-") as base:
         base_dir = Path(base)
-        tmp = base_dir / "baseline"
-        tmp.mkdir()
-        tests = _prepare(tmp)
-        code, failed, seconds = _run(tmp, tests, args.fast)
-        print(f"baseline (no mutation): {len(failed)} failed, {seconds:.1f} s")
-        if code != 0:
-            print(_summarise(failed))
-            print("the unmutated code must pass its tests first")
-            return 1
+        for i, (names, keyword) in enumerate(dict.fromkeys((m.tests, m.keyword) for m in mutants)):
+            tmp = base_dir / f"baseline-{i}"
+            tmp.mkdir()
+            tests = _prepare(tmp, names)
+            code, failed, seconds = _run(tmp, tests, args.fast, keyword)
+            selection = ", ".join(names) + (f" -k {keyword!r}" if keyword else "")
+            print(f"baseline (no mutation; {selection}): {len(failed)} failed, {seconds:.1f} s")
+            if code != 0:
+                print(_summarise(failed))
+                print("the unmutated code must pass its tests first")
+                return 1
+            shutil.rmtree(tmp)
 
         survivors = []
         for mutant in mutants:
             tmp = base_dir / mutant.name
             tmp.mkdir()
-            tests = _prepare(tmp)
+            tests = _prepare(tmp, mutant.tests)
             _apply(tmp, mutant)
-            code, failed, seconds = _run(tmp, tests, args.fast)
+            code, failed, seconds = _run(tmp, tests, args.fast, mutant.keyword)
             status = "killed" if failed else "SURVIVED"
             print(f"{mutant.name}: {status} ({len(failed)} failed, {seconds:.1f} s)")
             print(f"    {mutant.description}")

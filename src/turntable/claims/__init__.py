@@ -56,7 +56,12 @@ from turntable.claims._core import (
 )
 
 #: The modules of checks, in the order of the paper; each registers its claims in that order.
-CHECK_MODULES: tuple[str, ...] = ("_checks_spectrum", "_checks_solution", "_checks_limit")
+CHECK_MODULES: tuple[str, ...] = (
+    "_checks_intro",
+    "_checks_spectrum",
+    "_checks_solution",
+    "_checks_limit",
+)
 
 for _name in CHECK_MODULES:
     importlib.import_module(f"{__name__}.{_name}")

@@ -111,6 +111,10 @@ def resolve_params(params: Mapping[str, Any] | None = None) -> dict[str, Any]:
         raise ValueError(
             f"params['mu0_range'] must be [low, high] with low < high; got {low, high}"
         )
+    if not any(p["state_si"]):
+        raise ValueError(
+            f"params['state_si'] must not be all zero (m, m/s, rad/s); got {p['state_si']}"
+        )
     return {
         key: (value if _property_type(schema["properties"][key]) == "integer" else _as_float(value))
         for key, value in p.items()

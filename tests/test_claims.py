@@ -43,7 +43,11 @@ PAPER_IDS = {
     "limit.expansion",
     "limit.frequency",
     "limit.convergence",
+    "comparison.rolling_resistance",
 }
+
+#: Claims whose truth depends on values the paper does not give.
+UNDECIDABLE_IDS = {"comparison.rolling_resistance"}
 
 #: Claims whose statement holds only in a narrower form; every other claim is confirmed.
 REFINED_IDS = {
@@ -106,6 +110,8 @@ def test_claim_has_its_expected_verdict(claim_id: str) -> None:
     assert result["method"]
     assert result["verdict"] != "failed", f"{claim_id} failed: {result['evidence']}"
     expected = "refined" if claim_id in REFINED_IDS else "confirmed"
+    if claim_id in UNDECIDABLE_IDS:
+        expected = "undecidable"
     assert result["verdict"] == expected, f"{claim_id}: {result['evidence']}"
 
 
@@ -250,6 +256,43 @@ def test_wrong_no_slip_rate_fails(monkeypatch: pytest.MonkeyPatch) -> None:
     params = SMALL
     assert claims.evaluate("limit.frequency", params)["verdict"] == "failed"
     assert claims.evaluate("limit.convergence", params)["verdict"] == "failed"
+
+
+def test_perturbed_rolling_spectrum_fails(monkeypatch: pytest.MonkeyPatch) -> None:
+    from turntable import rolling
+
+    exact = rolling.spectrum
+
+    def perturbed(delta: Any, k: Any) -> rolling.RollingSpectrum:
+        s = exact(delta, k)
+        return s._replace(sigma_g=s.sigma_g * (1 + 1e-9))
+
+    monkeypatch.setattr(rolling, "spectrum", perturbed)
+    assert claims.evaluate("comparison.rolling_resistance", SMALL)["verdict"] == "failed"
+
+
+def test_wrong_rolling_growth_per_turn_fails(monkeypatch: pytest.MonkeyPatch) -> None:
+    from turntable import rolling
+
+    def wrong(delta: Any, k: Any) -> Any:
+        s = rolling.spectrum(delta, k)
+        return 2 * np.pi * s.sigma_g / (s.nu_g * (k + 2.0) / (k + 1.0))  # turning rate k/(k+2)
+
+    monkeypatch.setattr(rolling, "log_growth_per_turn", wrong)
+    assert claims.evaluate("comparison.rolling_resistance", SMALL)["verdict"] == "failed"
+
+
+def test_rolling_solution_with_a_wrong_inertia_ratio_fails(monkeypatch: pytest.MonkeyPatch) -> None:
+    """solve with k off by 1 %: it no longer matches the constrained 3-D equations."""
+    from turntable import rolling
+
+    exact = rolling.solve
+
+    def wrong(z0: Any, t: Any, delta: float, k: float) -> Any:
+        return exact(z0, t, delta, 1.01 * k)
+
+    monkeypatch.setattr(rolling, "solve", wrong)
+    assert claims.evaluate("comparison.rolling_resistance", SMALL)["verdict"] == "failed"
 
 
 # Reports -------------------------------------------------------------------------------

@@ -30,7 +30,12 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-from turntable.claims import _checks_limit, _checks_solution, _checks_spectrum  # noqa: F401
+from turntable.claims import (  # noqa: F401
+    _checks_comparison,
+    _checks_limit,
+    _checks_solution,
+    _checks_spectrum,
+)
 from turntable.claims._core import (
     DEFAULT_PARAMS,
     VERDICTS,
@@ -59,6 +64,7 @@ ORDER: tuple[str, ...] = (
     "solution.fast_transient",
     "trajectory.spiral",
     "trajectory.untwisting_slows",
+    "comparison.rolling_resistance",
     "limit.expansion",
     "limit.frequency",
     "limit.convergence",

@@ -10,10 +10,10 @@ from typing import Any, Literal
 import numpy as np
 from numpy.typing import NDArray
 
-Verdict = Literal["confirmed", "refined", "failed"]
+Verdict = Literal["confirmed", "refined", "corrected", "undecidable", "failed"]
 
 #: The three verdicts, from best to worst.
-VERDICTS: tuple[Verdict, ...] = ("confirmed", "refined", "failed")
+VERDICTS: tuple[Verdict, ...] = ("confirmed", "refined", "corrected", "undecidable", "failed")
 
 #: Significant digits kept for every float written to the report.
 SIGNIFICANT_DIGITS = 12

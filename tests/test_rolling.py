@@ -201,3 +201,33 @@ def test_powers() -> None:
     assert_allclose(rolling.power_rolling(z, 0.5), [2.0])
     assert_allclose(rolling.power_slipping(z, 0.5), [0.5 * ((1.0 - 2.0) ** 2)])
     assert_allclose(rolling.slip_velocity(Z_ROLL), [0.0, 0.0], atol=1e-16)
+
+
+@pytest.mark.parametrize("k", KS)
+@pytest.mark.parametrize(
+    ("comparison", "limit"),
+    [
+        pytest.param("equal_coefficient", lambda k: k**2 / (k + 1) ** 2, id="a"),
+        pytest.param("equal_power", lambda k: 1.0, id="b"),
+        pytest.param("equal_decay", lambda k: k, id="c"),
+    ],
+)
+def test_growth_ratio_large_coefficient_limits(comparison: str, limit, k: float) -> None:
+    """Slipping over rolling growth per turn for mu0 -> infinity: k^2/(k+1)^2, 1, k."""
+    ratio = rolling.growth_per_turn_ratio(1e8, k, comparison)
+    assert_allclose(ratio, limit(k), rtol=1e-6)
+
+
+def test_equal_power_delta_small_friction_limit() -> None:
+    """As mu0 -> 0, lambda_+ ~ sqrt(i mu0), so delta_P -> k^2."""
+    for k in (0.05, 0.4, 1.0):
+        assert_allclose(rolling.equal_power_delta(1e-12, k), k**2, rtol=5e-5)  # O(sqrt(mu0) / k)
+
+
+def test_matched_delta() -> None:
+    assert_allclose(rolling.matched_delta([0.1, 2.0], 0.4, "equal_coefficient"), [0.1, 2.0])
+    assert_allclose(
+        rolling.matched_delta(2.0, 0.4, "equal_power"), rolling.equal_power_delta(2.0, 0.4)
+    )
+    with pytest.raises(ValueError, match="comparison"):
+        rolling.matched_delta(1.0, 0.4, "equal_speed")

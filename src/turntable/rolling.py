@@ -501,6 +501,52 @@ def equal_decay_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
     return out
 
 
+#: The comparisons of the two mechanisms: (a) delta = mu0, (b) equal dissipated power on the
+#: slipping spiral, (c) equal decay rate of the non-growing part.
+COMPARISONS = ("equal_coefficient", "equal_power", "equal_decay")
+
+
+def matched_delta(mu0: ArrayLike, k: ArrayLike, comparison: str) -> NDArray[np.float64]:
+    """Return the rolling coefficient delta that corresponds to mu0 under a comparison.
+
+    Parameters
+    ----------
+    mu0, k : float or array_like
+        Slipping friction coefficient and inertia ratio, > 0.
+    comparison : {"equal_coefficient", "equal_power", "equal_decay"}
+        (a) delta = mu0; (b) `equal_power_delta`; (c) `equal_decay_delta`.
+
+    Returns
+    -------
+    numpy.ndarray
+        delta, of the broadcast shape of mu0 and k.
+    """
+    if comparison not in COMPARISONS:
+        raise ValueError(f"comparison must be one of {COMPARISONS}; got {comparison!r}")
+    if comparison == "equal_power":
+        return equal_power_delta(mu0, k)
+    if comparison == "equal_decay":
+        return equal_decay_delta(mu0, k)
+    mu0 = _validate.positive("mu0", mu0)
+    k = _validate.positive("k", k)
+    return np.broadcast_arrays(mu0, k)[0].astype(float)
+
+
+def growth_per_turn_ratio(mu0: ArrayLike, k: ArrayLike, comparison: str) -> NDArray[np.float64]:
+    """Return the slipping spiral's log growth per turn over the rolling one's.
+
+    Notes
+    -----
+    (2 pi alpha1 / beta)(mu0) / (2 pi sigma_g / nu_g)(delta), delta =
+    `matched_delta` (mu0, k, comparison).  Limits for large mu0:
+    k^2 / (k + 1)^2 (a), 1 (b), k (c).
+    """
+    from turntable.spectrum import log_growth_per_turn as slipping_growth
+
+    delta = matched_delta(mu0, k, comparison)
+    return slipping_growth(mu0, k) / log_growth_per_turn(delta, k)
+
+
 class RollingNewtonEuler(NamedTuple):
     """Trajectory of the constrained 3-D equations: t (n,), r, v, w (n, 3), force F (n, 3)."""
 

@@ -13,36 +13,12 @@ from turntable import rolling
 from turntable.claims import _reference_rolling as ref
 from turntable.claims._core import Outcome, Verdict, Where, mu0_grid, register, sig
 
-#: The three comparisons of the coefficients, in the order of the report.
-COMPARISONS = ("equal_coefficient", "equal_power", "equal_decay")
+COMPARISONS = rolling.COMPARISONS
 
 
 def growth_ratios(coefficient: Any, k: float) -> dict[str, NDArray[np.float64]]:
-    """Per-turn log growth of the slipping spiral over that of the rolling one.
-
-    Parameters
-    ----------
-    coefficient : array_like
-        The slipping model's mu0 (> 0).
-    k : float
-        Inertia ratio.
-
-    Returns
-    -------
-    dict
-        For each of `COMPARISONS`, (2 pi alpha1 / beta)(mu0) divided by
-        (2 pi sigma_g / nu_g)(delta) with delta = mu0 (a), delta of equal
-        dissipated power on the slipping spiral (b, `rolling.equal_power_delta`),
-        delta of equal decay of the non-growing part (c, `rolling.equal_decay_delta`).
-    """
-    mu0 = np.asarray(coefficient, dtype=float)
-    slip = tt.log_growth_per_turn(mu0, k)
-    deltas = {
-        "equal_coefficient": mu0,
-        "equal_power": rolling.equal_power_delta(mu0, k),
-        "equal_decay": rolling.equal_decay_delta(mu0, k),
-    }
-    return {name: slip / rolling.log_growth_per_turn(d, k) for name, d in deltas.items()}
+    """`rolling.growth_per_turn_ratio` under each of `COMPARISONS`."""
+    return {name: rolling.growth_per_turn_ratio(coefficient, k, name) for name in COMPARISONS}
 
 
 def _crossover(name: str, grid: NDArray[np.float64], ratio: NDArray[np.float64], k: float) -> float:

@@ -433,6 +433,43 @@ def test_a_zero_failed_summary_names_the_erratum() -> None:
     assert "2 of the paper, 1 added by the reproduction" in line
 
 
+def test_perturbed_rolling_spectrum_fails(monkeypatch: pytest.MonkeyPatch) -> None:
+    from turntable import rolling
+
+    exact = rolling.spectrum
+
+    def perturbed(delta: Any, k: Any) -> rolling.RollingSpectrum:
+        s = exact(delta, k)
+        return s._replace(sigma_g=s.sigma_g * (1 + 1e-9))
+
+    monkeypatch.setattr(rolling, "spectrum", perturbed)
+    assert claims.evaluate("comparison.rolling_resistance", SMALL)["verdict"] == "failed"
+
+
+def test_wrong_rolling_growth_per_turn_fails(monkeypatch: pytest.MonkeyPatch) -> None:
+    from turntable import rolling
+
+    def wrong(delta: Any, k: Any) -> Any:
+        s = rolling.spectrum(delta, k)
+        return 2 * np.pi * s.sigma_g / (s.nu_g * (k + 2.0) / (k + 1.0))  # turning rate k/(k+2)
+
+    monkeypatch.setattr(rolling, "log_growth_per_turn", wrong)
+    assert claims.evaluate("comparison.rolling_resistance", SMALL)["verdict"] == "failed"
+
+
+def test_rolling_solution_with_a_wrong_inertia_ratio_fails(monkeypatch: pytest.MonkeyPatch) -> None:
+    """solve with k off by 1 %: it no longer matches the constrained 3-D equations."""
+    from turntable import rolling
+
+    exact = rolling.solve
+
+    def wrong(z0: Any, t: Any, delta: float, k: float) -> Any:
+        return exact(z0, t, delta, 1.01 * k)
+
+    monkeypatch.setattr(rolling, "solve", wrong)
+    assert claims.evaluate("comparison.rolling_resistance", SMALL)["verdict"] == "failed"
+
+
 # Reports -------------------------------------------------------------------------------
 
 

@@ -41,6 +41,7 @@ OWN_TESTS = (
     "test_limit.py",
     "test_limits.py",
     "test_validation.py",
+    "test_rolling.py",
 )
 
 
@@ -237,6 +238,81 @@ MUTANTS = [
         ),
         CLAIMS_TESTS,
         "scaling",
+    ),
+    Mutant(
+        "rolling-growth-ratio",
+        "sigma_g = 4 delta q / (A (k + 1 + q)) instead of (k + 2 + q) (rolling spectrum)",
+        (
+            (
+                "rolling.py",
+                "sigma_g = 4.0 * d * qh / (a * (k + 2.0 + q))",
+                "sigma_g = 4.0 * d * qh / (a * (k + 1.0 + q))",
+                1,
+            ),
+        ),
+    ),
+    Mutant(
+        "rolling-turning-rate",
+        "nu_g = (k + q) / (2 (k + 2)) instead of / (2 (k + 1)) (rolling spectrum)",
+        (
+            (
+                "rolling.py",
+                "nu_g = (k + q) / (2.0 * (k + 1.0))",
+                "nu_g = (k + q) / (2.0 * (k + 2.0))",
+                1,
+            ),
+        ),
+    ),
+    Mutant(
+        "rolling-centre-frequency-sign",
+        "the centre's root turns the other way: nu_c = +4 delta^2 / (A (q + k))",
+        (
+            (
+                "rolling.py",
+                "nu_c = -4.0 * d * d / (a * (q + k))",
+                "nu_c = 4.0 * d * d / (a * (q + k))",
+                1,
+            ),
+        ),
+    ),
+    Mutant(
+        "rolling-amplitude-sign",
+        "A_g = (v0 + lambda_c r0) / (lambda_g - lambda_c) instead of v0 - lambda_c r0 (rolling)",
+        (("rolling.py", "(v0 - lc * r0) / d", "(v0 + lc * r0) / d", 1),),
+    ),
+    Mutant(
+        "rolling-constraint-sign",
+        "w = r - i v instead of w = r + i v in the rolling solution",
+        (("rolling.py", "w = amp + 1j * v", "w = amp - 1j * v", 1),),
+    ),
+    Mutant(
+        "rolling-torque-sign",
+        "the rolling-resistance moment drives the spin (+delta w_h) in the 3-D equations",
+        (
+            (
+                "rolling.py",
+                "return -delta * np.array([w[0], w[1], 0.0])",
+                "return delta * np.array([w[0], w[1], 0.0])",
+                1,
+            ),
+        ),
+    ),
+    Mutant(
+        "equal-power-ratio",
+        "(k u) instead of ((k + 1) u): x = k alpha1 in equal_power_delta",
+        (("rolling.py", "x = (k + 1.0) * sp.alpha1", "x = k * sp.alpha1", 1),),
+    ),
+    Mutant(
+        "comparison-swap",
+        "matched_delta returns the equal-decay delta for the equal-power comparison",
+        (
+            (
+                "rolling.py",
+                'if comparison == "equal_power":\n        return equal_power_delta(mu0, k)',
+                'if comparison == "equal_power":\n        return equal_decay_delta(mu0, k)',
+                1,
+            ),
+        ),
     ),
 ]
 

@@ -8,6 +8,7 @@ FIGURE_NAMES = [
     "fig4_trajectories",
     "fig5_damping_ratio",
     "fig6_limit",
+    "fig7_rolling_resistance",
 ]
 FIGURES = expand("figures/{name}.{ext}", name=FIGURE_NAMES, ext=["pdf", "png"])
 
@@ -156,6 +157,38 @@ rule fig6_limit:
         layer_t_span=config["fig6_limit"]["layer_t_span"],
     script:
         "../../scripts/fig6_limit.py"
+
+
+rule fig7_rolling_resistance:
+    input:
+        STYLE_FILES,
+        sorted(
+            str(f)
+            for f in (Path(workflow.basedir) / "src" / "turntable").rglob("*.py")
+        ),
+    output:
+        pdf="figures/fig7_rolling_resistance.pdf",
+        png=report(
+            "figures/fig7_rolling_resistance.png",
+            caption="../report/fig7_rolling_resistance.rst",
+            category="Figures",
+        ),
+    log:
+        "logs/fig7_rolling_resistance.log",
+    conda:
+        "../envs/turntable.yaml"
+    params:
+        dpi=config["style"]["dpi"],
+        k=config["fig7_rolling_resistance"]["k"],
+        state=config["fig7_rolling_resistance"]["state"],
+        mu0=config["fig7_rolling_resistance"]["mu0"],
+        comparison=config["fig7_rolling_resistance"]["comparison"],
+        t_span=config["fig7_rolling_resistance"]["t_span"],
+        n_points=config["fig7_rolling_resistance"]["n_points"],
+        mu0_range=config["fig7_rolling_resistance"]["mu0_range"],
+        n_grid=config["fig7_rolling_resistance"]["n_grid"],
+    script:
+        "../../scripts/fig7_rolling_resistance.py"
 
 
 rule figures:

@@ -60,6 +60,7 @@ CHECK_MODULES: tuple[str, ...] = (
     "_checks_intro",
     "_checks_spectrum",
     "_checks_solution",
+    "_checks_comparison",
     "_checks_limit",
 )
 

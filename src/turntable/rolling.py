@@ -1,0 +1,649 @@
+"""The comparison model: a ball rolling without slipping, with rolling resistance.
+
+The paper (Sec. 2, after Fig. 4) compares its slipping ball with a ball that
+rolls WITHOUT slipping on the turntable and feels a moment of resistance to
+rolling proportional to its angular velocity (ref. [2] of the paper).  This
+module is that second system, in the paper's dimensionless units (length R,
+time 1/Omega, mass m), with z = (x, y, vx, vy, wx, wy) as elsewhere.
+
+Model
+-----
+Contact at -gamma from the centre; the no-slip constraint (u of the paper
+set to zero) and the Newton-Euler equations with the reaction force F as
+Lagrange multiplier and the resistance torque M::
+
+    u = v + gamma x w - gamma x r = 0,                       (R1)
+    dv/dt = F - g gamma,   k dw/dt = (-gamma) x F + M,        (R2)
+    M = -delta w_h,   delta = delta_dim / (m R^2 Omega).      (R3)
+
+Which components of w the torque acts on: the horizontal ones, w_h
+(resistance to rolling proper; resistance to pivoting is a different
+mechanism).  The choice does not change the planar motion: the vertical spin
+wz enters neither (R1) (gamma x w has no wz) nor the horizontal part of (R2)
+(the vertical component of M gives gamma x M = 0), so with M = -delta w (all
+three components, inertial frame) or M = -delta (w - gamma) (relative to the
+plane) only wz evolves differently (it decays like exp(-delta t / k), or
+relaxes to the plane's spin 1, instead of staying constant).  `newton_euler`
+integrates all three variants; the tests compare them.
+
+Linear equations
+----------------
+Differentiating (R1) and eliminating F with (R2) gives, in complex form
+(r = x + i y, v = vx + i vy, w = wx + i wy; gamma x acts as i)::
+
+    w = r + i v,
+    (k + 1) dv/dt = (i k - delta) v + i delta r,                (R4)
+
+i.e. F_h = (k gamma x v + delta gamma x w) / (k + 1), a real linear system
+of dimension four on (x, y, vx, vy) (`system_matrix`); w follows from (R1).
+
+Eigenvalues
+-----------
+(R4) has the characteristic polynomial (k+1) lambda^2 + (delta - i k) lambda
+- i delta, with roots lambda_g (growing) and lambda_c (the centre's), and the
+real system has these and their conjugates.  With S = (delta + i k)^2
++ 4 i delta = (p + i q)^2 (p, q > 0, p q = delta (k + 2)) and
+A = |S| + delta^2 + k^2::
+
+    lambda_g = sigma_g + i nu_g,  lambda_c = sigma_c + i nu_c,
+    sigma_g = 4 delta q / (A (k + 2 + q))       (> 0: growth rate)
+    nu_g    = (k + q) / (2 (k + 1))             (rate of turning)
+    sigma_c = -(delta + p) / (2 (k + 1))        (< 0: centre's decay)
+    nu_c    = -4 delta^2 / (A (q + k))
+
+These follow from lambda = ((p - delta) + i (k + q)) / (2 (k + 1)) and
+((-delta - p) + i (k - q)) / (2 (k + 1)) with the identities
+q^2 - k^2 = p^2 - delta^2 = (|S| - delta^2 - k^2) / 2
+= 8 delta^2 (k + 1) / A, so no step subtracts nearly equal numbers.  Limits:
+delta -> 0: lambda_g = i k/(k+1) + delta/(k (k+1)) + O(delta^2),
+lambda_c = -delta/k + O(delta^2); delta -> infinity: lambda_g -> i (the ball
+is carried round with the plane), sigma_g ~ 1/delta, lambda_c ~ -(delta + i)/(k+1).
+No eigenvalue is on the imaginary axis for delta > 0 (on lambda = i y the
+imaginary part of the polynomial is delta (y - 1) and the real part at
+y = 1 is -1), so sigma_g > 0 > sigma_c for every delta > 0 and k > 0.
+
+Solution, centre
+----------------
+r(t) = A_g e^{lambda_g t} + A_c e^{lambda_c t} with
+A_g = (v0 - lambda_c r0) / (lambda_g - lambda_c),
+A_c = (lambda_g r0 - v0) / (lambda_g - lambda_c), v = dr/dt, w = r + i v.
+The first term is the spiral: radius growing like e^{sigma_g t}, i.e. by
+e^{2 pi sigma_g / nu_g} per turn.  Its centre is the second term,
+r_c(t) = A_c e^{lambda_c t}: unlike the slipping model (fixed centre
+(x0, y0) of (2.8)) it MOVES, spiralling into the turntable's axis at the
+rate |sigma_c| (for small delta, |sigma_c| / sigma_g -> k + 1).  The only
+equilibrium is the ball at rest on the axis.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from turntable import _validate
+from turntable.spectrum import _spectrum
+
+GAMMA = np.array([0.0, 0.0, 1.0])
+
+#: Largest slip |u| accepted by `solve`, relative to 1 + max |z0|.
+SLIP_TOLERANCE = 1e-10
+
+#: The torque variants of `newton_euler`: which components of w the torque acts on.
+TORQUES = ("horizontal", "full", "relative")
+
+
+def system_matrix(delta: float, k: float) -> NDArray[np.float64]:
+    """Return the 4x4 matrix of the rolling model on (x, y, vx, vy).
+
+    Parameters
+    ----------
+    delta : float
+        Dimensionless rolling-resistance coefficient delta_dim / (m R^2 Omega) > 0.
+    k : float
+        Inertia ratio I / (m R^2) > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        M of d(x, y, vx, vy)/dt = M (x, y, vx, vy), shape (4, 4).
+
+    Notes
+    -----
+    Equation (R4) of the module docstring in real form::
+
+        M = [[0, I], [delta J / (k + 1), (k J - delta I) / (k + 1)]]
+
+    with J = [[0, -1], [1, 0]]; w = r + J v follows from the constraint.
+    """
+    delta = _validate.positive_scalar("delta", delta)
+    k = _validate.positive_scalar("k", k)
+    i2 = np.eye(2)
+    j = np.array([[0.0, -1.0], [1.0, 0.0]])
+    return np.block(
+        [[np.zeros((2, 2)), i2], [delta * j / (k + 1.0), (k * j - delta * i2) / (k + 1.0)]]
+    )
+
+
+class RollingSpectrum(NamedTuple):
+    """Real and imaginary parts of the two roots of the rolling model.
+
+    Attributes
+    ----------
+    sigma_g, nu_g : numpy.ndarray
+        Growth rate (> 0) and rate of turning of the spiral, lambda_g = sigma_g + i nu_g.
+    sigma_c, nu_c : numpy.ndarray
+        Decay rate (< 0) and rate of turning of the spiral's centre,
+        lambda_c = sigma_c + i nu_c.
+    """
+
+    sigma_g: NDArray[np.float64]
+    nu_g: NDArray[np.float64]
+    sigma_c: NDArray[np.float64]
+    nu_c: NDArray[np.float64]
+
+
+def _spectrum_rolling(delta: NDArray[np.float64], k: NDArray[np.float64]) -> RollingSpectrum:
+    """`spectrum` on validated, broadcast arguments (scaled so nothing overflows)."""
+    c = np.maximum(delta, k)
+    d, kh = delta / c, k / c
+    re_s = (d - kh) * (d + kh)
+    im_s = 2.0 * d * (kh + 2.0 / c)
+    abs_s = np.hypot(re_s, im_s)
+    big = delta > k
+    with np.errstate(divide="ignore", invalid="ignore"):
+        p_big = np.sqrt((abs_s + re_s) / 2.0)
+        q_small = np.sqrt((abs_s - re_s) / 2.0)
+        ph = np.where(big, p_big, im_s / (2.0 * q_small))
+        qh = np.where(big, im_s / (2.0 * p_big), q_small)
+    a = abs_s + d * d + kh * kh
+    p, q = ph * c, qh * c
+    sigma_g = 4.0 * d * qh / (a * (k + 2.0 + q))
+    nu_g = (k + q) / (2.0 * (k + 1.0))
+    sigma_c = -(delta + p) / (2.0 * (k + 1.0))
+    nu_c = -4.0 * d * d / (a * (q + k))
+    return RollingSpectrum(sigma_g, nu_g, sigma_c, nu_c)
+
+
+def spectrum(delta: ArrayLike, k: ArrayLike) -> RollingSpectrum:
+    """Return sigma_g, nu_g, sigma_c, nu_c of the rolling model.
+
+    Parameters
+    ----------
+    delta, k : float or array_like
+        Rolling-resistance coefficient and inertia ratio, finite and > 0;
+        broadcast against each other.
+
+    Returns
+    -------
+    RollingSpectrum
+
+    Notes
+    -----
+    The closed forms of the module docstring (roots of
+    (k+1) lambda^2 + (delta - i k) lambda - i delta), each a quotient of
+    positive numbers, accurate to a few units in the last place.
+    """
+    delta = _validate.positive("delta", delta)
+    k = _validate.positive("k", k)
+    delta, k = np.broadcast_arrays(delta, k)
+    return _spectrum_rolling(delta, k)
+
+
+def eigenvalues(delta: ArrayLike, k: ArrayLike) -> NDArray[np.complex128]:
+    """Return the four eigenvalues of the real linear system `system_matrix`.
+
+    Returns
+    -------
+    numpy.ndarray
+        Complex, shape ``broadcast(delta, k).shape + (4,)``:
+        (lambda_g, conj lambda_g, lambda_c, conj lambda_c).
+
+    Notes
+    -----
+    See `spectrum` and the module docstring.
+    """
+    s = spectrum(delta, k)
+    out = np.empty((*s.sigma_g.shape, 4), dtype=complex)
+    out[..., 0] = s.sigma_g + 1j * s.nu_g
+    out[..., 1] = s.sigma_g - 1j * s.nu_g
+    out[..., 2] = s.sigma_c + 1j * s.nu_c
+    out[..., 3] = s.sigma_c - 1j * s.nu_c
+    return out
+
+
+def growth_rate(delta: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
+    """Return sigma_g, the growth rate per unit time of the spiral's radius.
+
+    Notes
+    -----
+    sigma_g = 4 delta q / (A (k + 2 + q)) (module docstring);
+    delta / (k (k + 1)) for small delta, about 1 / delta for large delta.
+    """
+    return spectrum(delta, k).sigma_g
+
+
+def log_growth_per_turn(delta: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
+    """Return 2 pi sigma_g / nu_g, the logarithm of the spiral's growth per turn.
+
+    Notes
+    -----
+    About 2 pi delta / k^2 for small delta and 2 pi / delta for large delta.
+    """
+    s = spectrum(delta, k)
+    return 2.0 * np.pi * s.sigma_g / s.nu_g
+
+
+def centre_decay_rate(delta: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
+    """Return |sigma_c|, the rate at which the spiral's centre approaches the axis.
+
+    Notes
+    -----
+    |sigma_c| = (delta + p) / (2 (k + 1)), between delta / (2 (k + 1)) and
+    delta / k; it is the decay rate of the non-growing part of the motion.
+    """
+    return -spectrum(delta, k).sigma_c
+
+
+def slip_velocity(z: ArrayLike) -> NDArray[np.float64]:
+    """Return u = v + gamma x w - gamma x r, components (ux, uy).
+
+    Notes
+    -----
+    Constraint (R1); the same u as in the slipping model (Section 1).
+    """
+    z = _validate.states("z", z)
+    return np.stack([z[..., 2] - z[..., 5] + z[..., 1], z[..., 3] + z[..., 4] - z[..., 0]], axis=-1)
+
+
+def state_on_constraint(xyv: ArrayLike) -> NDArray[np.float64]:
+    """Return the state (x, y, vx, vy, wx, wy) with w from the no-slip constraint.
+
+    Parameters
+    ----------
+    xyv : array_like
+        Four finite numbers (x, y, vx, vy).
+
+    Notes
+    -----
+    (R1): w = r + i v, i.e. wx = x - vy, wy = y + vx.
+    """
+    arr = _validate._as_float_array("xyv", xyv, "four finite numbers (x, y, vx, vy)")
+    if arr.shape != (4,) or not np.all(np.isfinite(arr)):
+        raise ValueError(f"xyv must be four finite numbers (x, y, vx, vy); got {xyv!r}")
+    x, y, vx, vy = arr
+    return np.array([x, y, vx, vy, x - vy, y + vx])
+
+
+class _Modes(NamedTuple):
+    ag: complex
+    ac: complex
+    lg: complex
+    lc: complex
+
+
+def _modes(z0: ArrayLike, delta: float, k: float) -> _Modes:
+    z0 = _validate.state("z0", z0)
+    delta = _validate.positive_scalar("delta", delta)
+    k = _validate.positive_scalar("k", k)
+    u = slip_velocity(z0)
+    if np.hypot(*u) > SLIP_TOLERANCE * (1.0 + np.max(np.abs(z0))):
+        raise ValueError(
+            "z0 violates the no-slip constraint of the rolling model: slip velocity "
+            f"u = v + gamma x w - gamma x r = ({u[0]:.6g}, {u[1]:.6g}) is not 0 "
+            "(build z0 with rolling.state_on_constraint)"
+        )
+    s = _spectrum_rolling(np.float64(delta), np.float64(k))
+    lg, lc = complex(s.sigma_g, s.nu_g), complex(s.sigma_c, s.nu_c)
+    r0, v0 = complex(z0[0], z0[1]), complex(z0[2], z0[3])
+    d = lg - lc
+    return _Modes((v0 - lc * r0) / d, (lg * r0 - v0) / d, lg, lc)
+
+
+def _mode_states(amp: NDArray[np.complex128], lam: complex) -> NDArray[np.float64]:
+    v = lam * amp
+    w = amp + 1j * v
+    return np.stack([amp.real, amp.imag, v.real, v.imag, w.real, w.imag], axis=-1)
+
+
+def _exp(lam: complex, t: NDArray[np.float64], amp: complex) -> NDArray[np.complex128]:
+    """amp e^{lam t}, raising a ValueError where it overflows."""
+    scale = max(abs(amp) * max(1.0, abs(lam)) * 2.0, 1e-300)
+    t_max = (np.log(np.finfo(float).max) - np.log(scale)) / lam.real if lam.real > 0 else np.inf
+    if t.size and t.max() > t_max:
+        raise ValueError(
+            f"t must be <= {t_max:.6g} for this z0, delta and k: beyond, the growing "
+            "mode exceeds the largest double"
+        )
+    with np.errstate(under="ignore"):
+        return amp * np.exp(lam.real * t) * (np.cos(lam.imag * t) + 1j * np.sin(lam.imag * t))
+
+
+class RollingModes(NamedTuple):
+    """The growing spiral and its moving centre, each of shape (len(t), 6)."""
+
+    spiral: NDArray[np.float64]
+    centre: NDArray[np.float64]
+
+
+def modal_terms(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> RollingModes:
+    """Split the rolling motion into the growing spiral and its moving centre.
+
+    Parameters
+    ----------
+    z0 : array_like
+        Initial state on the no-slip constraint (x, y, vx, vy, wx, wy).
+    t : array_like
+        1-D array of times >= 0.
+    delta, k : float
+        Rolling-resistance coefficient and inertia ratio, > 0.
+
+    Returns
+    -------
+    RollingModes
+        ``spiral`` carries A_g e^{lambda_g t}, ``centre`` A_c e^{lambda_c t}
+        (with their v and w = r + i v); they sum to `solve`.
+
+    Notes
+    -----
+    A_g = (v0 - lambda_c r0) / (lambda_g - lambda_c),
+    A_c = (lambda_g r0 - v0) / (lambda_g - lambda_c) (module docstring).
+    """
+    t = _validate.times("t", t)
+    m = _modes(z0, delta, k)
+    return RollingModes(
+        _mode_states(_exp(m.lg, t, m.ag), m.lg), _mode_states(_exp(m.lc, t, m.ac), m.lc)
+    )
+
+
+def solve(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> NDArray[np.float64]:
+    """Return the exact rolling motion z(t) from z0.
+
+    Parameters
+    ----------
+    z0 : array_like
+        Initial state (x, y, vx, vy, wx, wy); it must satisfy the no-slip
+        constraint u = 0 (to `SLIP_TOLERANCE` relative to 1 + max |z0|),
+        otherwise ValueError names the slip.
+    t : array_like
+        1-D array of times >= 0, in any order.
+    delta, k : float
+        Rolling-resistance coefficient and inertia ratio, finite and > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (len(t), 6).
+
+    Raises
+    ------
+    ValueError
+        For bad input, a z0 with slip, or times at which the growing mode
+        overflows (the message names the largest representable t).
+
+    Notes
+    -----
+    r(t) = A_g e^{lambda_g t} + A_c e^{lambda_c t}, v = dr/dt, w = r + i v.
+    """
+    spiral, centre = modal_terms(z0, t, delta, k)
+    return spiral + centre
+
+
+def spiral_centre(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> NDArray[np.float64]:
+    """Return the position of the spiral's centre, shape (len(t), 2).
+
+    Notes
+    -----
+    r_c(t) = A_c e^{lambda_c t}: it moves, spiralling into the turntable's
+    axis at the rate |sigma_c| (`centre_decay_rate`).
+    """
+    return modal_terms(z0, t, delta, k).centre[:, :2]
+
+
+def power_rolling(z: ArrayLike, delta: float) -> NDArray[np.float64]:
+    """Return the power dissipated by the rolling-resistance torque, delta |w_h|^2.
+
+    Notes
+    -----
+    (R3): -M . w = delta (wx^2 + wy^2), in units m R^2 Omega^3.
+    """
+    z = _validate.states("z", z)
+    delta = _validate.positive_scalar("delta", delta)
+    return delta * (z[..., 4] ** 2 + z[..., 5] ** 2)
+
+
+def power_slipping(z: ArrayLike, mu0: float) -> NDArray[np.float64]:
+    """Return the power dissipated by viscous slipping friction, mu0 |u|^2.
+
+    Notes
+    -----
+    Section 1 of the paper: F = -mu0 u at the contact point, which slides
+    with u relative to the plane; in units m R^2 Omega^3.
+    """
+    z = _validate.states("z", z)
+    mu0 = _validate.positive_scalar("mu0", mu0)
+    u = slip_velocity(z)
+    return mu0 * (u[..., 0] ** 2 + u[..., 1] ** 2)
+
+
+def equal_power_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
+    """Return delta that dissipates the slipping model's power on the same motion.
+
+    Parameters
+    ----------
+    mu0, k : float or array_like
+        Slipping friction coefficient and inertia ratio, > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        delta_P = mu0 |(k + 1) lambda_+ - i k|^2 / |lambda_+|^2.
+
+    Notes
+    -----
+    Comparison (b).  The motion is the slipping model's spiral (its growing
+    mode lambda_+ = alpha1 + i beta of (2.5)) about the turntable's axis:
+    r = rho, v = lambda_+ rho, w = -i lambda_+ rho / k, so
+    u = rho ((k + 1) lambda_+ - i k) / k and the ratio |u|^2 / |w|^2 is the
+    same at every instant; delta_P |w|^2 = mu0 |u|^2 then holds at every
+    instant, hence also on average.  (k + 1) beta - k is evaluated as
+    -2 k (h - 1) / (s (2 + s)), s = sqrt(2 (h + 1)), h - 1 = eps^2 / (h + 1),
+    free of cancellation; delta_P ~ k^4 / (mu0 (k + 1)^2) for large mu0.
+    """
+    mu0 = _validate.positive("mu0", mu0)
+    k = _validate.positive("k", k)
+    mu0, k = np.broadcast_arrays(mu0, k)
+    sp = _spectrum(mu0, k)
+    h = np.hypot(1.0, sp.eps)
+    s = np.sqrt(2.0 * (h + 1.0))
+    x = (k + 1.0) * sp.alpha1
+    y = -2.0 * k * (sp.eps**2 / (h + 1.0)) / (s * (2.0 + s))
+    return mu0 * (x * x + y * y) / (sp.alpha1**2 + sp.beta**2)
+
+
+def equal_decay_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
+    """Return delta at which the rolling centre decays at the slipping |alpha2|.
+
+    Parameters
+    ----------
+    mu0, k : float or array_like
+        Slipping friction coefficient and inertia ratio, > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        The unique delta with |sigma_c(delta, k)| = |alpha2(mu0, k)|.
+
+    Notes
+    -----
+    Comparison (c): equal decay rates of the non-growing parts (z- of (2.7)
+    and the moving centre).  |sigma_c| = (delta + p) / (2 (k + 1)) increases
+    strictly with delta and lies between delta / (2 (k + 1)) and delta / k,
+    so the root lies in [k |alpha2|, 2 (k + 1) |alpha2|]; it is found by
+    Brent's method to a relative 1e-15.  Large mu0: delta ~ mu0 (k+1)^2 / k;
+    small mu0: delta ~ k sqrt(mu0 / 2).
+    """
+    from scipy.optimize import brentq
+
+    mu0 = _validate.positive("mu0", mu0)
+    k = _validate.positive("k", k)
+    mu0, k = np.broadcast_arrays(mu0, k)
+    target = -_spectrum(mu0, k).alpha2
+    out = np.empty(mu0.shape)
+    for idx in np.ndindex(mu0.shape):
+        kk, a2 = np.float64(k[idx]), float(target[idx])
+
+        def f(dl: float, kk: np.float64 = kk, a2: float = a2) -> float:
+            return float(-_spectrum_rolling(np.float64(dl), kk).sigma_c) / a2 - 1.0
+
+        out[idx] = brentq(f, float(kk) * a2, 2.0 * (float(kk) + 1.0) * a2, xtol=1e-300, rtol=1e-15)
+    return out
+
+
+#: The comparisons of the two mechanisms: (a) delta = mu0, (b) equal dissipated power on the
+#: slipping spiral, (c) equal decay rate of the non-growing part.
+COMPARISONS = ("equal_coefficient", "equal_power", "equal_decay")
+
+
+def matched_delta(mu0: ArrayLike, k: ArrayLike, comparison: str) -> NDArray[np.float64]:
+    """Return the rolling coefficient delta that corresponds to mu0 under a comparison.
+
+    Parameters
+    ----------
+    mu0, k : float or array_like
+        Slipping friction coefficient and inertia ratio, > 0.
+    comparison : {"equal_coefficient", "equal_power", "equal_decay"}
+        (a) delta = mu0; (b) `equal_power_delta`; (c) `equal_decay_delta`.
+
+    Returns
+    -------
+    numpy.ndarray
+        delta, of the broadcast shape of mu0 and k.
+    """
+    if comparison not in COMPARISONS:
+        raise ValueError(f"comparison must be one of {COMPARISONS}; got {comparison!r}")
+    if comparison == "equal_power":
+        return equal_power_delta(mu0, k)
+    if comparison == "equal_decay":
+        return equal_decay_delta(mu0, k)
+    mu0 = _validate.positive("mu0", mu0)
+    k = _validate.positive("k", k)
+    return np.broadcast_arrays(mu0, k)[0].astype(float)
+
+
+def growth_per_turn_ratio(mu0: ArrayLike, k: ArrayLike, comparison: str) -> NDArray[np.float64]:
+    """Return the slipping spiral's log growth per turn over the rolling one's.
+
+    Notes
+    -----
+    (2 pi alpha1 / beta)(mu0) / (2 pi sigma_g / nu_g)(delta), delta =
+    `matched_delta` (mu0, k, comparison).  Limits for large mu0:
+    k^2 / (k + 1)^2 (a), 1 (b), k (c).
+    """
+    from turntable.spectrum import log_growth_per_turn as slipping_growth
+
+    delta = matched_delta(mu0, k, comparison)
+    return slipping_growth(mu0, k) / log_growth_per_turn(delta, k)
+
+
+class RollingNewtonEuler(NamedTuple):
+    """Trajectory of the constrained 3-D equations: t (n,), r, v, w (n, 3), force F (n, 3)."""
+
+    t: NDArray[np.float64]
+    r: NDArray[np.float64]
+    v: NDArray[np.float64]
+    w: NDArray[np.float64]
+    force: NDArray[np.float64]
+
+    @property
+    def z(self) -> NDArray[np.float64]:
+        """The planar state (x, y, vx, vy, wx, wy), shape (n, 6)."""
+        return np.column_stack([self.r[:, :2], self.v[:, :2], self.w[:, :2]])
+
+
+def newton_euler(
+    z0: ArrayLike,
+    t: ArrayLike,
+    delta: float,
+    k: float,
+    *,
+    torque: str = "horizontal",
+    wz0: float = 0.0,
+    g: float = 9.81,
+    rtol: float = 1e-12,
+    atol: float = 1e-13,
+) -> RollingNewtonEuler:
+    """Integrate the constrained 3-D Newton-Euler equations of the rolling ball.
+
+    Parameters
+    ----------
+    z0 : array_like
+        Initial planar state on the no-slip constraint; the centre starts at
+        height 1 with vz = 0.
+    t : array_like
+        Increasing 1-D array of output times >= 0.
+    delta, k : float
+        Rolling-resistance coefficient and inertia ratio, > 0.
+    torque : {"horizontal", "full", "relative"}
+        M = -delta w_h, M = -delta w, or M = -delta (w - gamma) (relative
+        to the plane).
+    wz0, g : float
+        Initial vertical spin and dimensionless gravity g / (R Omega^2).
+    rtol, atol : float
+        Tolerances of `scipy.integrate.solve_ivp` (DOP853).
+
+    Returns
+    -------
+    RollingNewtonEuler
+
+    Notes
+    -----
+    (R1)-(R3) with the reaction F as Lagrange multiplier: at each instant F
+    solves the 3x3 linear system obtained by differentiating (R1),
+    dv/dt + gamma x dw/dt - gamma x v = 0, with dv/dt = F - g gamma and
+    k dw/dt = -gamma x F + M.  Nothing of the reduction (R4) is used.
+    """
+    if torque not in TORQUES:
+        raise ValueError(f"torque must be one of {TORQUES}; got {torque!r}")
+    z0 = _validate.state("z0", z0)
+    _modes(z0, delta, k)  # validates delta, k and the constraint
+    t = _validate.times("t", t, increasing=True)
+    if t.size == 0:
+        raise ValueError("t must be a non-empty 1-D array of times >= 0")
+    delta, k = float(delta), float(k)
+    gvec = g * GAMMA
+
+    def cross_g(a: NDArray) -> NDArray:
+        return np.cross(GAMMA, a)
+
+    # d/dt (R1) = A F + b: A F = F + gamma x (-gamma x F) / k
+    amat = np.column_stack([e + cross_g(-cross_g(e)) / k for e in np.eye(3)])
+
+    def moment(w: NDArray) -> NDArray:
+        if torque == "horizontal":
+            return -delta * np.array([w[0], w[1], 0.0])
+        if torque == "full":
+            return -delta * w
+        return -delta * (w - GAMMA)
+
+    def force(v: NDArray, w: NDArray) -> NDArray:
+        rhs = gvec + cross_g(v) - cross_g(moment(w)) / k
+        return np.linalg.solve(amat, rhs)
+
+    def rhs(_t: float, y: NDArray) -> NDArray:
+        v, w = y[3:6], y[6:9]
+        f = force(v, w)
+        return np.concatenate([v, f - gvec, (-cross_g(f) + moment(w)) / k])
+
+    from scipy.integrate import solve_ivp
+
+    y0 = np.array([z0[0], z0[1], 1.0, z0[2], z0[3], 0.0, z0[4], z0[5], float(wz0)])
+    sol = solve_ivp(
+        rhs, (0.0, max(float(t[-1]), 1e-300)), y0, method="DOP853", t_eval=t, rtol=rtol, atol=atol
+    )
+    if not sol.success:
+        raise RuntimeError(f"solve_ivp failed: {sol.message}")
+    y = sol.y.T
+    forces = np.array([force(row[3:6], row[6:9]) for row in y])
+    return RollingNewtonEuler(sol.t, y[:, 0:3], y[:, 3:6], y[:, 6:9], forces)

@@ -109,7 +109,7 @@ def test_every_claim_records_where_it_is_and_what_the_paper_says() -> None:
         assert c.source in ("paper", "project"), claim_id
         assert c.expected in claims.VERDICTS, claim_id
         # An addition of the reproduction never reads as a location of the paper.
-        assert (c.source == "project") == c.label().startswith("added by the reproduction")
+        assert (c.source == "project") == c.label().startswith("addition (from ")
 
 
 def test_registration_refuses_a_claim_without_expected_verdict_or_paper_value() -> None:

@@ -3,7 +3,8 @@
 Caption: the coordinate x(t) = x0 + x+(t) + x-(t) of the centre of the ball split as in
 (2.7): x+ (modes alpha1 +- i beta, growing) and x- (modes alpha2 +- i beta, decaying), for
 each friction coefficient mu0 of the configuration; initial state x = y = 1, v = w = 0,
-k = 2/5 by default. After the first period x- is negligible next to x+.
+k = 2/5 by default, over the configured span (t <= 8 by default, a fraction of one period
+2 pi/beta): x- dies out within it, well before the end of the first period.
 """
 
 # %%

@@ -3,7 +3,9 @@
 Caption: (a) paths of the centre over one period 2 pi (k + 1)/k of the no-slip motion for
 growing mu0 (initial state x = y = 1, v = 0, wx = 0, wy = 1 by default), and the no-slip
 circle (3.3) (dashed). (b) Largest distance between the two paths on that interval against
-mu0, with the fitted power law. (c) The initial layer: speed of the centre for an initial
+mu0, with the least-squares power law over the plotted mu0 (its order is printed; the
+article quotes the order of the claim limit.convergence, a fit on [0, T] over other mu0 and
+every k, and says so). (c) The initial layer: speed of the centre for an initial
 state off the no-slip constraint, against time on a log axis, and the no-slip speed (dashed).
 (d) Slip speed |u| in the same runs: it decays on the time scale k/(mu0 (k + 1)).
 """

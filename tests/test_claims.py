@@ -110,7 +110,7 @@ def test_every_claim_records_where_it_is_and_what_the_paper_says() -> None:
         assert c.source in ("paper", "project"), claim_id
         assert c.expected in claims.VERDICTS, claim_id
         # An addition of the reproduction never reads as a location of the paper.
-        assert (c.source == "project") == c.label().startswith("added by the reproduction")
+        assert (c.source == "project") == c.label().startswith("addition (from ")
 
 
 def test_registration_refuses_a_claim_without_expected_verdict_or_paper_value() -> None:
@@ -163,7 +163,8 @@ def test_bad_params_raise_naming_the_key(key: str, value: Any) -> None:
 def test_the_schema_is_the_one_source_of_defaults_and_rules() -> None:
     """The package's schema gives every default; the workflow's schema refers to it."""
     schema = claims.params_schema()
-    assert set(schema["required"]) == set(schema["properties"]) == set(claims.DEFAULT_PARAMS)
+    assert set(schema["properties"]) == set(claims.DEFAULT_PARAMS)
+    assert "required" not in schema  # a key left out takes its default
     for key, prop in schema["properties"].items():
         assert prop.get("description"), key
         assert "default" in prop, key
@@ -381,6 +382,26 @@ def test_inward_spiral_fails(monkeypatch: pytest.MonkeyPatch) -> None:
 
     monkeypatch.setattr(ref, "expm_solution", inward)
     assert claims.evaluate("trajectory.spiral", SMALL)["verdict"] == "failed"
+
+
+def test_vertical_spin_fed_into_the_slip_fails(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The rubber-ball identity is not vacuous: a slip that depends on wz is noticed.
+
+    The mistake: the contact point's velocity taken from the whole position vector of the
+    centre, w x (-r), instead of w x (-R gamma); then wz enters the planar motion.
+    """
+    from turntable import newton_euler as ne
+    from turntable.claims import _checks_spectrum as checks
+
+    def wrong(r: np.ndarray, v: np.ndarray, w: np.ndarray) -> np.ndarray:
+        return v + np.cross(w, -r) - np.cross(ne.GAMMA, r)
+
+    checks._newton_euler.cache_clear()
+    monkeypatch.setattr(ne, "_slip", wrong)
+    try:
+        assert claims.evaluate("model.rubber_ball", SMALL)["verdict"] == "failed"
+    finally:
+        checks._newton_euler.cache_clear()
 
 
 def test_dimensional_spin_holds_for_another_ball(monkeypatch: pytest.MonkeyPatch) -> None:

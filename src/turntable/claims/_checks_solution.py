@@ -131,9 +131,9 @@ def _decomposition(p: dict[str, Any]) -> Outcome:
         reproduced=reproduced,
         tolerance=tol,
         summary=(
-            f"sum vs exp(Lt): {sig(sum_err, 2)}; subspaces: {sig(inv_err, 2)}; "
-            f"one-period shift: {sig(period_err, 2)}; growing part turns at +beta, decaying "
-            "part at -beta (opposite senses)"
+            "growing part turns at +beta, decaying part at -beta (opposite senses); largest "
+            f"errors over every k, mu0 and state: sum vs exp(Lt) {sig(sum_err, 2)}, subspaces "
+            f"{sig(inv_err, 2)}, one-period shift {sig(period_err, 2)}"
         ),
         evidence=evidence,
     )

@@ -265,7 +265,7 @@ class Claim:
     def label(self) -> str:
         """Return the location; an addition of the reproduction is marked as such."""
         if self.source == "project":
-            return f"added by the reproduction (builds on {self.where.label()})"
+            return f"addition (from {self.where.label()})"
         return self.where.label()
 
 

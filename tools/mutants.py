@@ -376,7 +376,9 @@ def _run(tmp: Path, tests: list[str], fast: bool, keyword: str) -> tuple[int, li
             if case.find("failure") is not None or case.find("error") is not None:
                 failed.append(f"{case.get('classname')}::{case.get('name')}")
         report.unlink()
-    if proc.returncode not in (0, 1) or (proc.returncode == 1 and not failed):
+    # With -x, pytest-xdist ends an interrupted run with exit code 2 after a failure.
+    stopped = fast and proc.returncode == 2 and bool(failed)
+    if (proc.returncode not in (0, 1) and not stopped) or (proc.returncode == 1 and not failed):
         print(proc.stdout[-3000:], proc.stderr[-3000:], sep="\n", file=sys.stderr)
         raise SystemExit(f"pytest could not run (exit code {proc.returncode})")
     return proc.returncode, failed, seconds

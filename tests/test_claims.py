@@ -10,6 +10,7 @@ model on purpose and require the affected check to notice.
 from __future__ import annotations
 
 import functools
+import importlib
 import json
 import math
 from pathlib import Path
@@ -390,8 +391,9 @@ def test_vertical_spin_fed_into_the_slip_fails(monkeypatch: pytest.MonkeyPatch) 
     The mistake: the contact point's velocity taken from the whole position vector of the
     centre, w x (-r), instead of w x (-R gamma); then wz enters the planar motion.
     """
-    from turntable import newton_euler as ne
     from turntable.claims import _checks_spectrum as checks
+
+    ne = importlib.import_module("turntable.newton_euler")
 
     def wrong(r: np.ndarray, v: np.ndarray, w: np.ndarray) -> np.ndarray:
         return v + np.cross(w, -r) - np.cross(ne.GAMMA, r)

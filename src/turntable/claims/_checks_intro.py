@@ -65,8 +65,9 @@ def _no_slip_run(z0: NDArray[np.float64], k: float, t: NDArray[np.float64]) -> d
     method=(
         "Build the no-slip dynamics from the Newton-Euler equations with the contact force "
         "that keeps u = 0, and sample exp(M t) z0 over two turns for the no-slip states of "
-        "Fig. 4, of a ball put down at rest where Fig. 4 starts, and of random states, for every k. Measure the "
-        "variation of the distance from the centre, of the speed, of the orbital rate (against "
+        "Fig. 4, of a ball put down at rest where Fig. 4 starts, and of random states, for "
+        "every k. Measure the variation of the distance from the centre, of the speed, of the "
+        "orbital rate (against "
         "k/(k+1)), of the ball's angular velocity vector and of its magnitude; compare the "
         "package's no-slip motion with the same samples."
     ),

@@ -37,7 +37,7 @@ setup: $(STAMP)
 $(STAMP): pyproject.toml constraints.txt
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	PIP_CONSTRAINT=constraints.txt $(BIN)/python -m pip install --quiet \
-		--disable-pip-version-check -e ".[test,dev,notebooks]"
+		--disable-pip-version-check -e ".[workflow,test,dev,notebooks]"
 	touch $(STAMP)
 
 test: $(STAMP)
@@ -60,7 +60,7 @@ bench: $(STAMP)
 # Re-resolve the newest versions into constraints.txt (needs the network).
 lock:
 	rm -rf .lockvenv && $(PYTHON) -m venv .lockvenv
-	.lockvenv/bin/pip install --quiet ".[test,dev,notebooks,slurm]"
+	.lockvenv/bin/pip install --quiet ".[workflow,test,dev,notebooks,slurm]"
 	{ echo "# Exact versions of every package the project installs (pip constraints)."; \
 	  echo "# Regenerate: make lock"; \
 	  .lockvenv/bin/pip freeze --all --exclude-editable | grep -v -e '^turntable' -e '^pip=='; } > constraints.txt

@@ -9,7 +9,6 @@ person reads.  Both are deterministic: keys are sorted, floats are rounded to
 from __future__ import annotations
 
 import json
-import subprocess
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
@@ -17,6 +16,7 @@ from typing import Any
 import turntable
 from turntable.claims import VERDICTS, evaluate_all, resolve_params
 from turntable.claims._core import clean
+from turntable.provenance import git_state
 
 #: Version of the layout of ``claims.json``.
 SCHEMA_VERSION = 1
@@ -24,23 +24,14 @@ SCHEMA_VERSION = 1
 
 def git_commit(cwd: str | Path | None = None) -> str:
     """Return ``git rev-parse HEAD`` in ``cwd``, or ``"unknown"`` outside a git checkout."""
-    try:
-        out = subprocess.run(
-            ["git", "rev-parse", "HEAD"],
-            cwd=cwd,
-            capture_output=True,
-            text=True,
-            check=True,
-            timeout=10,
-        )
-    except (OSError, subprocess.SubprocessError):
-        return "unknown"
-    commit = out.stdout.strip()
-    return commit if len(commit) == 40 else "unknown"
+    return git_state(cwd)[0]
 
 
 def build_report(
-    params: Mapping[str, Any] | None = None, *, commit: str = "unknown"
+    params: Mapping[str, Any] | None = None,
+    *,
+    commit: str = "unknown",
+    provenance: Mapping[str, Any] | None = None,
 ) -> dict[str, Any]:
     """Evaluate every claim and assemble the report.
 
@@ -50,11 +41,14 @@ def build_report(
         Check parameters (the ``claims:`` section of the configuration).
     commit : str
         Git commit of the code that produced the report.
+    provenance : mapping, optional
+        The record of :func:`turntable.provenance.provenance` (commit, dirty tree, Python
+        and library versions), stored under ``provenance``.
 
     Returns
     -------
     dict
-        ``schema, package, version, git_commit, params, order, summary
+        ``schema, package, version, git_commit, provenance, params, order, summary
         (count per verdict), claims`` (records keyed by id).
     """
     p = resolve_params(params)
@@ -67,6 +61,7 @@ def build_report(
             "package": "turntable",
             "version": turntable.__version__,
             "git_commit": commit,
+            "provenance": dict(provenance) if provenance is not None else None,
             "params": p,
             "order": [r["id"] for r in records],
             "summary": counts,
@@ -137,9 +132,10 @@ def write_reports(
     params: Mapping[str, Any] | None = None,
     *,
     commit: str = "unknown",
+    provenance: Mapping[str, Any] | None = None,
 ) -> dict[str, Any]:
     """Build the report and write it as JSON and as Markdown; return it."""
-    report = build_report(params, commit=commit)
+    report = build_report(params, commit=commit, provenance=provenance)
     for path, text in ((json_path, to_json(report)), (md_path, to_markdown(report))):
         path = Path(path)
         path.parent.mkdir(parents=True, exist_ok=True)

@@ -18,6 +18,7 @@ REPORT := if [ ! -f results/report.html ] || [ -n "$$(find figures results/study
 all: $(STAMP)
 	$(BIN)/snakemake --cores $(CORES)
 	@$(REPORT)
+	@$(BIN)/python tools/build_summary.py
 
 # Every script of scripts/ executed as a notebook with its outputs: results/notebooks/.
 notebooks: $(STAMP)
@@ -28,9 +29,10 @@ report: $(STAMP)
 	$(BIN)/snakemake --cores $(CORES)
 	@$(REPORT)
 
-# Refresh the figure shown in README.md (docs/fig4_trajectories.png).
+# Refresh the figure and the animation shown in README.md (docs/fig4_trajectories.png,
+# docs/animation.gif).
 readme-figure: $(STAMP)
-	$(BIN)/snakemake --cores $(CORES) readme_figure
+	$(BIN)/snakemake --cores $(CORES) readme_figure readme_animation
 
 setup: $(STAMP)
 

@@ -24,6 +24,7 @@ OUTPUTS = [f"figures/{n}.{ext}" for n in FIGURES for ext in ("pdf", "png")] + [
     "results/claims.md",
     "paper/paper.pdf",
     "results/report.html",
+    "figures/animation.gif",
     "results/notebooks/fig1_schematic.ipynb",
     "results/notebooks/claims_report.ipynb",
 ]

@@ -36,6 +36,8 @@ rule all:
         "figures/animation.gif",
         "results/claims.json",
         "results/claims.md",
+        "results/claims.html",
+        "results/figures.html",
         "paper/paper.pdf",
         STUDY_OUTPUTS,
         NOTEBOOKS,

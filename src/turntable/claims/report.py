@@ -126,6 +126,58 @@ def to_markdown(report: Mapping[str, Any]) -> str:
     return "\n".join(lines) + "\n"
 
 
+_VERDICT_COLOURS = {
+    "confirmed": "#1b7837",
+    "refined": "#b35806",
+    "corrected": "#8c510a",
+    "undecidable": "#5e3c99",
+    "failed": "#b2182b",
+}
+
+
+def to_html(report: Mapping[str, Any]) -> str:
+    """Render a report as a self-contained HTML page: the counts, then the table of claims.
+
+    The columns are those of :func:`to_markdown`; the verdict is coloured. Shown in the
+    HTML report of the workflow (rule ``claims_table``).
+    """
+    from html import escape
+
+    s = report["summary"]
+    counts = ", ".join(f"{s[v]} {v}" for v in VERDICTS if s.get(v))
+    rows = []
+    for cid in report["order"]:
+        c = report["claims"][cid]
+        colour = _VERDICT_COLOURS.get(c["verdict"], "#000000")
+        cells = (
+            f"<code>{escape(cid)}</code>",
+            escape(str(c["where"]["label"])),
+            escape(str(c["claim"])),
+            escape(_paper_value(c["paper_value"])),
+            escape(str(c["summary"])),
+            f'<b style="color:{colour}">{escape(c["verdict"])}</b>',
+        )
+        rows.append("<tr>" + "".join(f"<td>{x}</td>" for x in cells) + "</tr>")
+    head = "".join(
+        f"<th>{h}</th>"
+        for h in ("id", "where in the paper", "claim", "paper's value", "reproduced", "verdict")
+    )
+    return (
+        '<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">'
+        "<title>Claims of Ivanova (2019) and their reproduction</title><style>"
+        "body{font-family:sans-serif;font-size:14px}table{border-collapse:collapse}"
+        "td,th{border:1px solid #ccc;padding:4px 6px;text-align:left;vertical-align:top}"
+        "</style></head><body>\n"
+        "<h1>Claims of Ivanova (2019) and their reproduction</h1>\n"
+        f"<p>{s['total']} claims: {escape(counts)}. turntable {escape(report['version'])}, "
+        f"commit <code>{escape(report['git_commit'])}</code>. Sections, equations and "
+        "figures in the second column are those of the original paper.</p>\n"
+        f"<table>\n<thead><tr>{head}</tr></thead>\n<tbody>\n"
+        + "\n".join(rows)
+        + "\n</tbody>\n</table>\n</body></html>\n"
+    )
+
+
 def write_reports(
     json_path: str | Path,
     md_path: str | Path,

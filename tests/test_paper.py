@@ -322,3 +322,11 @@ def test_pdf_is_reproducible_and_carries_the_report(paper_tree: Path) -> None:
     assert first == second
     assert first.startswith(b"%PDF")
     assert b"claims.json" in first
+
+
+def test_article_numbers_its_figures_as_their_files() -> None:
+    """Figure N of the article is figures/figN_*: the figures appear in that order, in place."""
+    figures = _figures(PAPER.read_text(encoding="utf-8"))
+    numbers = [int(re.match(r"fig(\d+)_", Path(path).stem).group(1)) for path, _ in figures]
+    assert numbers == list(range(1, len(figures) + 1))
+    assert "placement:" not in PAPER.read_text(encoding="utf-8")  # no floats reordering them

@@ -95,7 +95,7 @@ def to_markdown(report: Mapping[str, Any]) -> str:
         f"{s['total']} claims: {s['confirmed']} confirmed, {s['refined']} refined, "
         f"{s['failed']} failed.",
         "",
-        "| id | where | claim | paper's value | reproduced | verdict |",
+        "| id | where in the paper | claim | paper's value | reproduced | verdict |",
         "|---|---|---|---|---|---|",
     ]
     for cid in report["order"]:

@@ -46,8 +46,8 @@ test: $(STAMP)
 	$(BIN)/python -m pytest -n 2
 
 lint: $(STAMP)
-	$(BIN)/ruff check src tests benchmarks scripts workflow
-	$(BIN)/ruff format --check src tests benchmarks scripts workflow
+	$(BIN)/ruff check src tests benchmarks scripts workflow tools
+	$(BIN)/ruff format --check src tests benchmarks scripts workflow tools
 	$(BIN)/snakefmt --check .
 	$(BIN)/snakemake --lint
 

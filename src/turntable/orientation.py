@@ -113,6 +113,11 @@ def ball_angular_velocity(z: ArrayLike, wz: float) -> NDArray[np.float64]:
     -------
     numpy.ndarray
         Shape (n, 3).
+
+    Notes
+    -----
+    Section 1: the vertical component of I dw/dt = mu0 R gamma x u vanishes, so wz keeps its
+    initial value; (wx, wy) are the last two components of the state of (1.7).
     """
     z = _validate.states("z", z)
     wz = float(wz)

@@ -18,6 +18,7 @@ REPORT := if [ ! -f results/report.html ] || [ -n "$$(find figures results/study
 all: $(STAMP)
 	$(BIN)/snakemake --cores $(CORES)
 	@$(REPORT)
+	@$(BIN)/python tools/build_summary.py
 
 # Every script of scripts/ executed as a notebook with its outputs: results/notebooks/.
 notebooks: $(STAMP)
@@ -28,24 +29,25 @@ report: $(STAMP)
 	$(BIN)/snakemake --cores $(CORES)
 	@$(REPORT)
 
-# Refresh the figure shown in README.md (docs/fig4_trajectories.png).
+# Refresh the figure and the animation shown in README.md (docs/fig4_trajectories.png,
+# docs/animation.gif).
 readme-figure: $(STAMP)
-	$(BIN)/snakemake --cores $(CORES) readme_figure
+	$(BIN)/snakemake --cores $(CORES) readme_figure readme_animation
 
 setup: $(STAMP)
 
 $(STAMP): pyproject.toml constraints.txt
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	PIP_CONSTRAINT=constraints.txt $(BIN)/python -m pip install --quiet \
-		--disable-pip-version-check -e ".[test,dev,notebooks]"
+		--disable-pip-version-check -e ".[workflow,test,dev,notebooks]"
 	touch $(STAMP)
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -n 2
 
 lint: $(STAMP)
-	$(BIN)/ruff check src tests benchmarks scripts workflow
-	$(BIN)/ruff format --check src tests benchmarks scripts workflow
+	$(BIN)/ruff check src tests benchmarks scripts workflow tools
+	$(BIN)/ruff format --check src tests benchmarks scripts workflow tools
 	$(BIN)/snakefmt --check .
 	$(BIN)/snakemake --lint
 
@@ -61,7 +63,7 @@ bench: $(STAMP)
 # Re-resolve the newest versions into constraints.txt (needs the network).
 lock:
 	rm -rf .lockvenv && $(PYTHON) -m venv .lockvenv
-	.lockvenv/bin/pip install --quiet ".[test,dev,notebooks,slurm]"
+	.lockvenv/bin/pip install --quiet ".[workflow,test,dev,notebooks,slurm]"
 	{ echo "# Exact versions of every package the project installs (pip constraints)."; \
 	  echo "# Regenerate: make lock"; \
 	  .lockvenv/bin/pip freeze --all --exclude-editable | grep -v -e '^turntable' -e '^pip=='; } > constraints.txt

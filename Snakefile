@@ -26,14 +26,18 @@ include: "workflow/rules/study.smk"
 include: "workflow/rules/notebooks.smk"
 include: "workflow/rules/report.smk"
 include: "workflow/rules/docs.smk"
+include: "workflow/rules/animation.smk"
 
 
 rule all:
     default_target: True
     input:
         FIGURES,
+        "figures/animation.gif",
         "results/claims.json",
         "results/claims.md",
+        "results/claims.html",
+        "results/figures.html",
         "paper/paper.pdf",
         STUDY_OUTPUTS,
         NOTEBOOKS,

@@ -12,16 +12,24 @@ import tempfile
 from pathlib import Path
 from typing import Any
 
+from turntable.provenance import provenance
+
+ROOT = Path(__file__).resolve().parents[1]
+
 
 def merge_results(path: Path, sections: dict[str, Any]) -> None:
     """Set the top-level keys of ``sections`` in the JSON file at ``path``, keeping the others.
 
     The file is replaced atomically (a temporary file in the same folder, then a rename)
-    and is readable by everyone, like any other output.
+    and is readable by everyone, like any other output. ``provenance`` holds, per key, the
+    record of :func:`turntable.provenance.provenance` (commit, dirty tree, versions) of the
+    run that wrote that key.
     """
     path = Path(path)
     data: dict[str, Any] = json.loads(path.read_text()) if path.exists() else {}
     data.update(sections)
+    record = provenance(ROOT)
+    data["provenance"] = data.get("provenance", {}) | {key: record for key in sections}
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
     try:

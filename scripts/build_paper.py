@@ -4,15 +4,20 @@ Run by rule ``paper`` (workflow/rules/paper.smk). The sources, results/claims.js
 figures (the rule's inputs, nothing else) are copied into a temporary tree with the layout
 the article expects (paper/, results/, figures/), which is the Typst root; so the build does
 not depend on the working directory. System fonts are ignored and the creation date is fixed
-(config ``paper.timestamp``), so two builds give the same bytes.
+(config ``paper.timestamp``), so two builds give the same bytes. ``results/build.json`` in that
+tree is the provenance of this build (turntable.provenance: the commit that builds the PDF,
+a dirty tree, versions) and the repository address, read by paper/provenance.typ.
 """
 
+import json
 import logging
 import shutil
 import tempfile
 from pathlib import Path
 
 import typst
+
+from turntable.provenance import provenance
 
 logging.basicConfig(filename=snakemake.log[0], level=logging.INFO, filemode="w")
 
@@ -27,6 +32,12 @@ with tempfile.TemporaryDirectory() as tmp:
         (root / folder).mkdir()
         for f in map(Path, files):
             shutil.copyfile(f, root / folder / f.name)
+    build = {
+        "provenance": provenance(Path(snakemake.scriptdir).parent),
+        "repository": snakemake.params.repository.rstrip("/"),
+    }
+    (root / "results" / "build.json").write_text(json.dumps(build, indent=1, sort_keys=True))
+    logging.info("provenance: %s", build)
     try:
         pdf = typst.compile(
             str(root / "paper" / snakemake.params.main),

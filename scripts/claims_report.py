@@ -7,15 +7,18 @@ of config/config.yaml.
 import logging
 from pathlib import Path
 
-from turntable.claims.report import git_commit, write_reports
+from turntable.claims.report import write_reports
+from turntable.provenance import provenance
 
 logging.basicConfig(filename=snakemake.log[0], level=logging.INFO, filemode="w")
 
+record = provenance(Path(snakemake.scriptdir).parent)
 report = write_reports(
     snakemake.output.json,
     snakemake.output.md,
     dict(snakemake.params.claims),
-    commit=git_commit(Path(snakemake.scriptdir).parent),
+    commit=record["git_commit"],
+    provenance=record,
 )
 logging.info("claims: %s", report["summary"])
 for cid in report["order"]:

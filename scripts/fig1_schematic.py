@@ -38,7 +38,7 @@ fig, ((ax,),) = subplots(1, 1, (SINGLE, 2.2), margins=(0.0, 0.0, 0.0, 0.0))
 phi = np.linspace(0.0, 2.0 * np.pi, 200)
 ax.fill(*at(3.3 * np.cos(phi), 3.3 * np.sin(phi)), color="0.9", ec="0.5", lw=0.6)
 origin = at(0, 0)
-arrow(ax, origin, at(2.6, 0), "$x$", (0.0, -0.2))
+arrow(ax, origin, at(2.6, 0), "$x$", (-0.2, 0.17))  # inside the plane, off its rim
 arrow(ax, origin, at(0, 2.8), "$y$", (0.2, 0.05))
 arrow(ax, origin, at(0, 0, 2.6), "$z$", (0.0, 0.18))
 label(ax, origin, (-0.05, -0.3), "$O$")

@@ -30,8 +30,10 @@ for y, label, y_large in [
 ]:
     ax.plot(mu0, y, label=label, lw=2.0, alpha=0.8)
     ax.plot(mu0[hi], y_large[hi], "k--", lw=0.7)
-ax.plot(mu0[lo], small.beta[lo], "k:", lw=1.0, label=r"$\sqrt{\mu_0/2}$")
-ax.plot([], [], "k--", lw=0.7, label="(3.2)")
+ax.plot(
+    mu0[lo], small.beta[lo], "k:", lw=1.0, label=r"small $\mu_0$: $\beta \approx \sqrt{\mu_0/2}$"
+)
+ax.plot([], [], "k--", lw=0.7, label=r"large $\mu_0$: expansion (3.2) in $1/\mu_0$")
 ax.plot(peak.mu0, peak.alpha1, "o", color="C0", ms=4)
 ax.annotate(
     rf"max $\alpha_1 = {peak.alpha1:.4f}$" + "\n" + rf"at $\mu_0 = {peak.mu0:.4f}$",

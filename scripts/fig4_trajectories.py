@@ -30,8 +30,9 @@ for i, (ax, mu0, span) in enumerate(zip(panels, p.mu0, p.t_span, strict=True)):
     ax.plot(z[:, 0], z[:, 1], color=f"C{i}", lw=0.9)
     ax.plot(*p.state[:2], "o", mfc="w", mec="k", ms=4, label="$z(0)$")
     ax.plot(*centre, "ko", ms=5, label=r"$(x_0, y_0)$")
-    ax.set(aspect="equal", xlabel="$x/R$", ylabel="$y/R$")
-    ax.set_title(rf"$\mu_0 = {mu0:g}$, $t\Omega \leq {span[1]:g}$, $\alpha_1 = {alpha1:.3f}$")
+    # Equal scales in x and y, but every panel keeps the same size (the limits adapt).
+    ax.set(aspect="equal", adjustable="datalim", xlabel="$x/R$", ylabel="$y/R$")
+    ax.set_title(rf"$\mu_0 = {mu0:g}$, $t\Omega \leq {span[1]:g}$, $\alpha_1 = {alpha1:.2g}$")
     dist = np.hypot(*(z[:, :2] - centre).T)
     dist_ax.plot(t, dist, color=f"C{i}", label=rf"$\mu_0 = {mu0:g}$")
 panels[0].legend(loc="lower right", fontsize=6, handletextpad=0.2)

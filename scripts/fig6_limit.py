@@ -2,12 +2,13 @@
 
 Caption: (a) paths of the centre over one period 2 pi (k + 1)/k of the no-slip motion for
 growing mu0 (initial state x = y = 1, v = 0, wx = 0, wy = 1 by default), and the no-slip
-circle (3.3) (dashed). (b) Largest distance between the two paths on that interval against
-mu0, with the least-squares power law over the plotted mu0 (its order is printed; the
-article quotes the order of the claim limit.convergence, a fit on [0, T] over other mu0 and
-every k, and says so). (c) The initial layer: speed of the centre for an initial
-state off the no-slip constraint, against time on a log axis, and the no-slip speed (dashed).
-(d) Slip speed |u| in the same runs: it decays on the time scale k/(mu0 (k + 1)).
+circle (3.3) (grey band, under the coloured paths). (b) Largest distance between the two
+paths on that interval against mu0, with the least-squares power law over the plotted mu0
+(its order is printed; the article quotes the order of the claim limit.convergence, a fit on
+[0, T] over other mu0 and every k, and says so). (c) The initial layer: speed of the centre
+for an initial state off the no-slip constraint, against time on a log axis, and the no-slip
+speed (grey band). (d) Slip speed |u| in the same runs: it decays on the time scale
+k/(mu0 (k + 1)). One colour per mu0 in all panels.
 """
 
 # %%
@@ -22,11 +23,15 @@ t = np.linspace(0.0, float(turntable.nonholonomic_period(p.k)), p.n_points)
 t_layer = np.geomspace(*p.layer_t_span, p.n_points)
 fig, axes = subplots(2, 2, (DOUBLE, 5.0), (0.55, 0.1, 0.4, 0.22), (1.0, 0.65))
 (ax_a, ax_b), (ax_c, ax_d) = axes
+# One colour per mu0 in every panel; the no-slip curves are wide grey bands underneath.
+colour = {m: f"C{i}" for i, m in enumerate(sorted({*p.mu0_trajectories, *p.mu0_layer}))}
+no_slip = {"color": "0.7", "lw": 3.5, "zorder": 1, "label": "no slip"}
 
 # %% (a) paths and (b) position error over one no-slip period
 for mu0 in p.mu0_trajectories:
-    ax_a.plot(*turntable.solve(p.state, t, mu0, p.k)[:, :2].T, label=rf"$\mu_0 = {mu0:g}$")
-ax_a.plot(*turntable.nonholonomic(p.state, t, p.k)[:, :2].T, "k--", lw=0.9, label="no slip")
+    z = turntable.solve(p.state, t, mu0, p.k)
+    ax_a.plot(*z[:, :2].T, color=colour[mu0], lw=1.0, label=rf"$\mu_0 = {mu0:g}$")
+ax_a.plot(*turntable.nonholonomic(p.state, t, p.k)[:, :2].T, **no_slip)
 ax_a.plot(*turntable.spiral_centre(p.state, p.k), "ko", ms=4)
 ax_a.plot(*p.state[:2], "o", mfc="w", mec="k", ms=4)
 ax_a.set(aspect="equal", xlabel="$x/R$", ylabel="$y/R$")
@@ -46,9 +51,10 @@ print(f"fitted slope of the position error: {slope:.4f}")
 v_ns = np.hypot(*turntable.nonholonomic(p.layer_state, t_layer, p.k)[:, 2:4].T)
 for mu0 in p.mu0_layer:
     z = turntable.solve(p.layer_state, t_layer, mu0, p.k)
-    ax_c.plot(t_layer, np.hypot(*z[:, 2:4].T), label=rf"$\mu_0 = {mu0:g}$")
-    ax_d.loglog(t_layer, np.hypot(*turntable.slip_velocity(z).T), label=rf"$\mu_0 = {mu0:g}$")
-ax_c.plot(t_layer, v_ns, "k--", lw=0.9, label="no slip")
+    style = {"color": colour[mu0], "label": rf"$\mu_0 = {mu0:g}$"}
+    ax_c.plot(t_layer, np.hypot(*z[:, 2:4].T), **style)
+    ax_d.loglog(t_layer, np.hypot(*turntable.slip_velocity(z).T), **style)
+ax_c.plot(t_layer, v_ns, **no_slip)
 ax_c.set(xscale="log", ylabel=r"speed $|\mathbf{v}|/(R\Omega)$", title="(c) initial layer")
 ax_d.set(ylabel=r"slip speed $|\mathbf{u}|/(R\Omega)$", title="(d) slip in the initial layer")
 for ax in (ax_c, ax_d):

@@ -3,7 +3,7 @@
 Caption: (a) growth rate alpha1 against mu0 for each k of the study, with the closed-form
 maximum (dot). (b) The excess ln N / (2 pi) - 1 = abs(alpha2)/beta - 1 against mu0 on log
 axes: positive everywhere (2.10), vanishing only as mu0 -> 0.
-Also writes results/study/summary.json (turntable.study.summarize).
+Also writes results/study/summary.json (turntable.study.summarize, with its provenance).
 """
 
 # %%
@@ -15,11 +15,12 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from _style import DOUBLE, save, setup
+from turntable.provenance import provenance
 from turntable.study import summarize
 
 setup(snakemake)
 results = [json.loads(Path(path).read_text()) for path in snakemake.input.results]
-summary = summarize(results)
+summary = summarize(results) | {"provenance": provenance(Path(snakemake.scriptdir).parent)}
 out = Path(snakemake.output.json)
 tmp = out.with_name(f".{out.name}.partial")
 tmp.write_text(json.dumps(summary, indent=1) + "\n")

@@ -3,8 +3,9 @@ the README figure and the study (tests/test_notebooks.py, test_readme.py, test_s
 
 The sources are copied into a temporary directory shared by all xdist workers of the
 session; the first worker to ask plans the whole workflow there (a dry run with the SLURM
-profile and the dry-run executor), then builds Fig. 1 with its notebook and the README
-figure (Fig. 4 copied to docs/), with the project's own configuration. A file lock makes
+profile and the dry-run executor), then builds Fig. 1 with its notebook, the README
+figure (Fig. 4 copied to docs/) and the animation (copied to docs/), with the project's own
+configuration. A file lock makes
 the other workers wait for that build and reuse it.
 """
 
@@ -27,6 +28,7 @@ TARGETS = [
     "figures/fig1_schematic.png",
     "results/notebooks/fig1_schematic.ipynb",
     "readme_figure",
+    "readme_animation",
 ]
 
 

@@ -9,6 +9,7 @@ import math
 from pathlib import Path
 from types import ModuleType
 
+import numpy as np
 import pytest
 
 BENCHMARKS = Path(__file__).resolve().parents[1] / "benchmarks"
@@ -71,4 +72,11 @@ def test_results_are_merged_into_the_shared_file(common: ModuleType, tmp_path: P
     assert data["other"] == {"x": 1}
     assert data["eigenvalues"] == {"pass": True}
     assert set(data["meta"]) >= {"python", "numpy", "scipy"}
+    # Each key written records the provenance of the run that wrote it (turntable.provenance).
+    assert set(data["provenance"]) == {"eigenvalues", "meta"}
+    record = data["provenance"]["eigenvalues"]
+    assert len(record["git_commit"]) == 40 or record["git_commit"] == "unknown"
+    assert isinstance(record["git_dirty"], bool | None)
+    assert record["packages"]["numpy"] == np.__version__
+    assert set(record["packages"]) >= {"scipy", "mpmath", "sympy", "matplotlib", "snakemake"}
     assert [p.name for p in tmp_path.iterdir()] == ["benchmarks.json"]

@@ -24,6 +24,9 @@ OUTPUTS = [f"figures/{n}.{ext}" for n in FIGURES for ext in ("pdf", "png")] + [
     "results/claims.md",
     "paper/paper.pdf",
     "results/report.html",
+    "figures/animation.gif",
+    "results/claims.html",
+    "results/figures.html",
     "results/notebooks/fig1_schematic.ipynb",
     "results/notebooks/claims_report.ipynb",
 ]

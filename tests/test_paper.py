@@ -11,6 +11,7 @@ check that the PDF is reproducible and carries the report.
 
 from __future__ import annotations
 
+import json
 import re
 import shutil
 from pathlib import Path
@@ -21,8 +22,12 @@ import yaml
 # The clean build of the figure workflow, shared with tests/test_pipeline.py.
 from test_pipeline import clean_build, shared_tmp  # noqa: F401
 from turntable.claims.report import write_reports
+from turntable.provenance import provenance
 
 ROOT = Path(__file__).resolve().parents[1]
+# A commit for the build record of the test article (not a real one: it must not be taken
+# from the claims report, whose commit is that of the checkout).
+BUILT_FROM = "0123456789abcdef0123456789abcdef01234567"
 PAPER = ROOT / "paper" / "paper.typ"
 VALUES = ROOT / "paper" / "values.typ"
 
@@ -244,7 +249,7 @@ def test_every_figure_comes_from_figures_and_names_its_script() -> None:
         assert path.startswith("../figures/"), path
         stem = Path(path).stem
         stems.append(stem)
-        assert f"`scripts/{stem}.py`" in caption, (path, caption)
+        assert f'#script-link("{stem}")' in caption, (path, caption)
         assert (ROOT / "scripts" / f"{stem}.py").is_file(), stem
     made = sorted(p.stem for p in (ROOT / "scripts").glob("fig*.py"))
     assert sorted(stems) == made
@@ -278,7 +283,27 @@ def paper_tree(clean_build: Path, tmp_path_factory: pytest.TempPathFactory) -> P
     write_reports(
         tree / "results" / "claims.json", tree / "results" / "claims.md", config["claims"]
     )
+    # As scripts/build_paper.py writes it; a made-up commit, distinct from the claims report's.
+    record = provenance(ROOT) | {"git_commit": BUILT_FROM, "git_dirty": True}
+    build = {"provenance": record, "repository": config["paper"]["repository"]}
+    (tree / "results" / "build.json").write_text(json.dumps(build))
     return tree
+
+
+def test_pdf_names_the_commit_that_built_it_and_links_the_scripts(paper_tree: Path) -> None:
+    import typst
+
+    main = str(paper_tree / "paper" / "paper.typ")
+    built = json.loads(
+        typst.query(main, "<built-from>", field="value", one=True, root=str(paper_tree))
+    )
+    assert built == {"commit": BUILT_FROM, "dirty": True}
+    links = set(json.loads(typst.query(main, "link", field="dest", root=str(paper_tree))))
+    repository = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())["paper"][
+        "repository"
+    ]
+    for stem in sorted(p.stem for p in (ROOT / "scripts").glob("fig*.py")):
+        assert f"{repository}/blob/{BUILT_FROM}/scripts/{stem}.py" in links, stem
 
 
 def test_pdf_is_reproducible_and_carries_the_report(paper_tree: Path) -> None:
@@ -297,3 +322,11 @@ def test_pdf_is_reproducible_and_carries_the_report(paper_tree: Path) -> None:
     assert first == second
     assert first.startswith(b"%PDF")
     assert b"claims.json" in first
+
+
+def test_article_numbers_its_figures_as_their_files() -> None:
+    """Figure N of the article is figures/figN_*: the figures appear in that order, in place."""
+    figures = _figures(PAPER.read_text(encoding="utf-8"))
+    numbers = [int(re.match(r"fig(\d+)_", Path(path).stem).group(1)) for path, _ in figures]
+    assert numbers == list(range(1, len(figures) + 1))
+    assert "placement:" not in PAPER.read_text(encoding="utf-8")  # no floats reordering them

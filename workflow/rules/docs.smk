@@ -17,3 +17,20 @@ rule readme_figure:
 
         shutil.copyfile(input[0], output[0])
         Path(log[0]).write_text(f"copied {input[0]} to {output[0]}\n")
+
+
+# The animation at the top of README.md, docs/animation.gif: a copy of figures/animation.gif,
+# refreshed by `make readme-figure` like the figure above, byte-compared by tests/test_readme.py.
+rule readme_animation:
+    input:
+        "figures/animation.gif",
+    output:
+        "docs/animation.gif",
+    log:
+        "logs/readme_animation.log",
+    localrule: True
+    run:
+        import shutil
+
+        shutil.copyfile(input[0], output[0])
+        Path(log[0]).write_text(f"copied {input[0]} to {output[0]}\n")

@@ -23,5 +23,6 @@ rule paper:
     params:
         main="paper.typ",
         timestamp=config["paper"]["timestamp"],
+        repository=config["paper"]["repository"],
     script:
         "../../scripts/build_paper.py"

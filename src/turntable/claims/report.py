@@ -9,7 +9,6 @@ person reads.  Both are deterministic: keys are sorted, floats are rounded to
 from __future__ import annotations
 
 import json
-import subprocess
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
@@ -17,6 +16,7 @@ from typing import Any
 import turntable
 from turntable.claims import VERDICTS, evaluate_all, resolve_params
 from turntable.claims._core import clean, split_bound
+from turntable.provenance import git_state
 
 #: What each verdict means, in the words of the report (README and article say the same).
 VERDICT_MEANINGS: dict[str, str] = {
@@ -35,19 +35,7 @@ SCHEMA_VERSION = 1
 
 def git_commit(cwd: str | Path | None = None) -> str:
     """Return ``git rev-parse HEAD`` in ``cwd``, or ``"unknown"`` outside a git checkout."""
-    try:
-        out = subprocess.run(
-            ["git", "rev-parse", "HEAD"],
-            cwd=cwd,
-            capture_output=True,
-            text=True,
-            check=True,
-            timeout=10,
-        )
-    except (OSError, subprocess.SubprocessError):
-        return "unknown"
-    commit = out.stdout.strip()
-    return commit if len(commit) == 40 else "unknown"
+    return git_state(cwd)[0]
 
 
 def summarize(records: list[Mapping[str, Any]]) -> dict[str, Any]:
@@ -61,7 +49,10 @@ def summarize(records: list[Mapping[str, Any]]) -> dict[str, Any]:
 
 
 def build_report(
-    params: Mapping[str, Any] | None = None, *, commit: str = "unknown"
+    params: Mapping[str, Any] | None = None,
+    *,
+    commit: str = "unknown",
+    provenance: Mapping[str, Any] | None = None,
 ) -> dict[str, Any]:
     """Evaluate every claim and assemble the report.
 
@@ -71,11 +62,14 @@ def build_report(
         Check parameters (the ``claims:`` section of the configuration).
     commit : str
         Git commit of the code that produced the report.
+    provenance : mapping, optional
+        The record of :func:`turntable.provenance.provenance` (commit, dirty tree, Python
+        and library versions), stored under ``provenance``.
 
     Returns
     -------
     dict
-        ``schema, package, version, git_commit, params, order, summary
+        ``schema, package, version, git_commit, provenance, params, order, summary
         (count per verdict), claims`` (records keyed by id).
     """
     p = resolve_params(params)
@@ -87,6 +81,7 @@ def build_report(
             "package": "turntable",
             "version": turntable.__version__,
             "git_commit": commit,
+            "provenance": dict(provenance) if provenance is not None else None,
             "params": p,
             "order": [r["id"] for r in records],
             "summary": counts,
@@ -154,7 +149,7 @@ def to_markdown(report: Mapping[str, Any]) -> str:
         + ". Claims added by the reproduction (not the paper's) are marked *(addition)*; "
         "their location says what in the paper they build on.",
         "",
-        "| id | where | claim | paper's value | reproduced | verdict |",
+        "| id | where in the paper | claim | paper's value | reproduced | verdict |",
         "|---|---|---|---|---|---|",
     ]
     for cid in report["order"]:
@@ -189,15 +184,68 @@ def to_markdown(report: Mapping[str, Any]) -> str:
     return "\n".join(lines) + "\n"
 
 
+_VERDICT_COLOURS = {
+    "confirmed": "#1b7837",
+    "refined": "#b35806",
+    "corrected": "#8c510a",
+    "undecidable": "#5e3c99",
+    "failed": "#b2182b",
+}
+
+
+def to_html(report: Mapping[str, Any]) -> str:
+    """Render a report as a self-contained HTML page: the counts, then the table of claims.
+
+    The columns are those of :func:`to_markdown`; the verdict is coloured. Shown in the
+    HTML report of the workflow (rule ``claims_table``).
+    """
+    from html import escape
+
+    s = report["summary"]
+    counts = ", ".join(f"{s[v]} {v}" for v in VERDICTS if s.get(v))
+    rows = []
+    for cid in report["order"]:
+        c = report["claims"][cid]
+        colour = _VERDICT_COLOURS.get(c["verdict"], "#000000")
+        cells = (
+            f"<code>{escape(cid)}</code>",
+            escape(str(c["where"]["label"])),
+            escape(str(c["claim"])),
+            escape(_paper_value(c["paper_value"])),
+            escape(str(c["summary"])),
+            f'<b style="color:{colour}">{escape(c["verdict"])}</b>',
+        )
+        rows.append("<tr>" + "".join(f"<td>{x}</td>" for x in cells) + "</tr>")
+    head = "".join(
+        f"<th>{h}</th>"
+        for h in ("id", "where in the paper", "claim", "paper's value", "reproduced", "verdict")
+    )
+    return (
+        '<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">'
+        "<title>Claims of Ivanova (2019) and their reproduction</title><style>"
+        "body{font-family:sans-serif;font-size:14px}table{border-collapse:collapse}"
+        "td,th{border:1px solid #ccc;padding:4px 6px;text-align:left;vertical-align:top}"
+        "</style></head><body>\n"
+        "<h1>Claims of Ivanova (2019) and their reproduction</h1>\n"
+        f"<p>{s['total']} claims: {escape(counts)}. turntable {escape(report['version'])}, "
+        f"commit <code>{escape(report['git_commit'])}</code>. Sections, equations and "
+        "figures in the second column are those of the original paper.</p>\n"
+        f"<table>\n<thead><tr>{head}</tr></thead>\n<tbody>\n"
+        + "\n".join(rows)
+        + "\n</tbody>\n</table>\n</body></html>\n"
+    )
+
+
 def write_reports(
     json_path: str | Path,
     md_path: str | Path,
     params: Mapping[str, Any] | None = None,
     *,
     commit: str = "unknown",
+    provenance: Mapping[str, Any] | None = None,
 ) -> dict[str, Any]:
     """Build the report and write it as JSON and as Markdown; return it."""
-    report = build_report(params, commit=commit)
+    report = build_report(params, commit=commit, provenance=provenance)
     for path, text in ((json_path, to_json(report)), (md_path, to_markdown(report))):
         path = Path(path)
         path.parent.mkdir(parents=True, exist_ok=True)

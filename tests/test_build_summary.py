@@ -1,0 +1,79 @@
+"""tools/build_summary.py: the summary `make` prints at the end."""
+
+from __future__ import annotations
+
+import importlib.util
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+TOOL = ROOT / "tools" / "build_summary.py"
+
+
+def _report(verdicts: dict[str, str]) -> dict:
+    counts: dict[str, int] = {}
+    for v in verdicts.values():
+        counts[v] = counts.get(v, 0) + 1
+    return {
+        "order": list(verdicts),
+        "summary": counts | {"total": len(verdicts)},
+        "claims": {
+            c: {"verdict": v, "summary": f"value of {c} " + "x" * 200} for c, v in verdicts.items()
+        },
+    }
+
+
+def _run(tmp_path: Path, report: dict | None, study: dict | None) -> str:
+    claims, summary = tmp_path / "claims.json", tmp_path / "summary.json"
+    if report is not None:
+        claims.write_text(json.dumps(report))
+    if study is not None:
+        summary.write_text(json.dumps(study))
+    out = subprocess.run(
+        [sys.executable, str(TOOL), str(claims), str(summary)],
+        capture_output=True, text=True, check=True,
+    )  # fmt: skip
+    return out.stdout
+
+
+def test_lists_every_claim_that_is_not_confirmed(tmp_path: Path) -> None:
+    verdicts = {
+        "a.one": "confirmed",
+        "b.two": "refined",
+        "c.three": "failed",
+        "d.four": "confirmed",
+    }
+    out = _run(tmp_path, _report(verdicts), {"all_passed": True, "failed": [], "per_k": [1, 2]})
+    lines = out.splitlines()
+    assert "claims: 4 checked: 2 confirmed, 1 refined, 1 failed" in lines
+    listed = [line for line in lines if line.startswith("  ")]
+    assert [line.split()[:2] for line in listed] == [["refined", "b.two"], ["failed", "c.three"]]
+    assert all(len(line) <= 110 for line in lines)
+    assert any("results/claims.md" in line for line in lines)
+    assert "study: all checks hold for 2 values of k" in lines
+
+
+def test_all_confirmed_lists_none(tmp_path: Path) -> None:
+    out = _run(tmp_path, _report({"a.one": "confirmed"}), None)
+    assert "claims: 1 checked: 1 confirmed" in out
+    assert not [line for line in out.splitlines() if line.startswith("  ")]
+
+
+def test_missing_report_and_failed_study(tmp_path: Path) -> None:
+    study = {"all_passed": False, "failed": ["k=0.4: damping bound"], "per_k": []}
+    out = _run(tmp_path, None, study)
+    assert "is missing" in out
+    assert "study: failed checks: k=0.4: damping bound" in out
+
+
+@pytest.mark.parametrize("verdict", ["refined", "corrected", "undecidable", "failed"])
+def test_any_verdict_other_than_confirmed_is_listed(verdict: str) -> None:
+    spec = importlib.util.spec_from_file_location("build_summary", TOOL)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    lines = module.claims_lines(_report({"x.y": verdict}))
+    assert lines[1].split()[:2] == [verdict, "x.y"]

@@ -1,0 +1,48 @@
+"""One HTML page with every figure and its caption together (results/figures.html).
+
+Run by rule ``figure_gallery`` (workflow/rules/report.smk); the page is part of the HTML
+report (category "Overview"), where otherwise a figure's caption shows only beside the
+figure opened on its own. Captions are the report's own (workflow/report/<figure>.rst,
+Jinja templates of the configuration, rendered as Snakemake renders them, then RST to HTML
+with docutils); the PNGs are embedded, so the page is self-contained.
+"""
+
+import base64
+import html
+import logging
+import os
+from pathlib import Path
+from types import SimpleNamespace
+
+import jinja2
+from docutils.core import publish_parts
+
+logging.basicConfig(filename=snakemake.log[0], level=logging.INFO, filemode="w")
+context = SimpleNamespace(config=snakemake.config)
+sections = []
+for name, png, rst in zip(
+    snakemake.params.names, snakemake.input.pngs, snakemake.input.captions, strict=True
+):
+    text = jinja2.Template(Path(rst).read_text(encoding="utf-8")).render(snakemake=context)
+    caption = publish_parts(text, writer_name="html", settings_overrides={"report_level": 5})
+    data = base64.b64encode(Path(png).read_bytes()).decode("ascii")
+    sections.append(
+        f'<figure id="{name}"><img src="data:image/png;base64,{data}" alt="{name}">'
+        f"<figcaption><b>{html.escape(name)}</b> (<code>figures/{name}.png</code>, drawn by "
+        f"<code>scripts/{name}.py</code>). {caption['body']}</figcaption></figure>"
+    )
+page = (
+    '<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8"><title>Figures</title>'
+    "<style>body{font-family:sans-serif;font-size:14px;max-width:60em;margin:auto}"
+    "img{max-width:100%}figure{margin:2em 0;border-bottom:1px solid #ccc}"
+    "figcaption p{display:inline}</style></head><body>\n<h1>Figures of the reproduction</h1>\n"
+    "<p>Each figure of the article, numbered as its file name (figN), with its caption. "
+    "Figures of the original paper are named as the paper's (e.g. the paper's Fig. 4).</p>\n"
+    + "\n".join(sections)
+    + "\n</body></html>\n"
+)
+out = Path(snakemake.output[0])
+tmp = out.with_name(f".{out.name}.partial")
+tmp.write_text(page, encoding="utf-8")
+os.replace(tmp, out)
+logging.info("wrote %s with %d figures", out, len(sections))

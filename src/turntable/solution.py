@@ -162,14 +162,13 @@ def solve(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> NDArray[np.float
     c = _coefficients(z0, mu0, k)
     d = c.lp - c.lm
     # With D = -E X / d, X = expm1(-d t) and E = e^{lambda_+ t}:
-    #   rho = rho0 E + q E X,   v = v0 E + qv E X,
+    #   rho = rho0 E + q E X,   v = v0 E + qv E X   (q, qv: `_coefficient_matrix`),
     #   E X = e^{lambda_- t} - e^{lambda_+ t}
     #       = G (expm1(a) cos(beta t) - i sin(beta t) (2 + expm1(a))),
     # with G = e^{alpha1 t} and a = (alpha2 - alpha1) t <= 0: no cancellation,
-    # no overflow (the decaying mode may underflow to 0), real functions only.
-    q = -(c.v0 - c.lp * c.rho0) / d
-    qv = -(c.lm * c.v0 + 1j * c.mu0 * c.rho0) / d
-    coef = _solution_matrix(c.rc, c.rho0, q, c.v0, qv, c.k)
+    # no overflow (times where G times the coefficients would overflow are
+    # refused; the decaying mode may underflow to 0), real functions only.
+    coef = _coefficient_matrix(c)
     _validate.times_within("t", t, _time_limit(c, coef), _limit_reason(c))
     out = np.empty((t.size, 6))
     # Work in blocks so that the temporaries stay small (cache-resident and
@@ -245,10 +244,15 @@ def max_time(mu0: ArrayLike, k: ArrayLike, z0: ArrayLike | None = None) -> NDArr
         s = spectrum(mu0, k)
         return _validate.growth_limit(s.alpha1)
     c = _coefficients(z0, mu0, k)
+    return np.asarray(_time_limit(c, _coefficient_matrix(c)))
+
+
+def _coefficient_matrix(c: _Coefficients) -> NDArray[np.float64]:
+    """`_solution_matrix` of the solution with coefficients ``c`` (see `solve`)."""
     d = c.lp - c.lm
     q = -(c.v0 - c.lp * c.rho0) / d
     qv = -(c.lm * c.v0 + 1j * c.mu0 * c.rho0) / d
-    return np.asarray(_time_limit(c, _solution_matrix(c.rc, c.rho0, q, c.v0, qv, c.k)))
+    return _solution_matrix(c.rc, c.rho0, q, c.v0, qv, c.k)
 
 
 def _solution_matrix(

@@ -38,6 +38,7 @@ NAMES = [
     "fig4_trajectories",
     "fig5_damping_ratio",
     "fig6_limit",
+    "fig7_rolling_resistance",
 ]
 OUTPUTS = sorted(f"figures/{name}.{ext}" for name in NAMES for ext in ("pdf", "png"))
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
@@ -57,6 +58,7 @@ def base_config() -> dict[str, Any]:
     config["fig4_trajectories"].update(mu0=[0.3, 1.0], t_span=[[0.0, 20.0], [0.0, 30.0]])
     config["fig5_damping_ratio"]["k"] = [0.4]
     config["fig6_limit"].update(mu0_trajectories=[10.0], mu0_layer=[100.0], n_error=3)
+    config["fig7_rolling_resistance"]["n_grid"] = 20
     return config
 
 
@@ -178,7 +180,7 @@ def interrupted_build(shared_tmp: Path) -> tuple[Path, dict]:
 
 
 # --------------------------------------------------------------------------- a full build
-def test_workflow_declares_exactly_the_six_figures(clean_build: Path) -> None:
+def test_workflow_declares_exactly_its_figures(clean_build: Path) -> None:
     proc = run_snakemake(clean_build, "--summary", "figures", cores=1)
     assert proc.returncode == 0, proc.stderr
     rows = [line.split("\t") for line in proc.stdout.splitlines() if line.startswith("figures/")]

@@ -1,11 +1,23 @@
 # make        set up .venv (pinned) and build everything with Snakemake
 # make test   set up .venv (pinned) and run the test suite
 # make notebooks / make report / make readme-figure   see README.md
+# make CONFIGFILE=my.yaml   build with the values of my.yaml over config/config.yaml
 PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
+# Two stages of .venv: what the build needs (make), then the tools of the tests and of
+# development (make setup, make test, make lint). Without byte-compiling every installed
+# file: Python compiles (and caches) a module when it is first imported.
+BUILD_STAMP := $(VENV)/.installed-build
 STAMP := $(VENV)/.installed
+PIP_INSTALL := PIP_CONSTRAINT=constraints.txt $(BIN)/python -m pip install --quiet \
+	--disable-pip-version-check --no-compile
 CORES ?= all
+
+# With CONFIGFILE, Snakemake reads that file before the Snakefile and would answer a
+# missing file with a traceback and a YAML syntax error with neither file nor line; the
+# file is checked first (workflow/config_checks.py), then passed with --configfile.
+SNAKEMAKE = $(if $(CONFIGFILE),$(BIN)/python workflow/config_checks.py $(CONFIGFILE) && )$(BIN)/snakemake$(if $(CONFIGFILE), --configfile $(CONFIGFILE))
 
 .PHONY: all setup test lint bench mutants lock clean notebooks report readme-figure
 
@@ -13,33 +25,37 @@ CORES ?= all
 # second `make` does nothing.
 REPORT := if [ ! -f results/report.html ] || [ -n "$$(find figures results/study \
 	results/claims.json -newer results/report.html -print -quit 2>/dev/null)" ]; then \
-	$(BIN)/snakemake --report results/report.html; else echo "results/report.html is up to date"; fi
+	$(SNAKEMAKE) --report results/report.html; else echo "results/report.html is up to date"; fi
 
-all: $(STAMP)
-	$(BIN)/snakemake --cores $(CORES)
+all: $(BUILD_STAMP)
+	$(SNAKEMAKE) --cores $(CORES)
 	@$(REPORT)
 	@$(BIN)/python tools/build_summary.py
 
-# Every script of scripts/ executed as a notebook with its outputs: results/notebooks/.
-notebooks: $(STAMP)
-	$(BIN)/snakemake --cores $(CORES) notebooks
+# Every script of scripts/ executed as a notebook with its outputs: results/notebooks/ (each
+# written by the job that runs the script; also part of make).
+notebooks: $(BUILD_STAMP)
+	$(SNAKEMAKE) --cores $(CORES) notebooks
 
 # Self-contained HTML page with every figure and its caption (needs the built figures).
-report: $(STAMP)
-	$(BIN)/snakemake --cores $(CORES)
+report: $(BUILD_STAMP)
+	$(SNAKEMAKE) --cores $(CORES)
 	@$(REPORT)
 
 # Refresh the figure and the animation shown in README.md (docs/fig4_trajectories.png,
 # docs/animation.gif).
-readme-figure: $(STAMP)
-	$(BIN)/snakemake --cores $(CORES) readme_figure readme_animation
+readme-figure: $(BUILD_STAMP)
+	$(SNAKEMAKE) --cores $(CORES) readme_figure readme_animation
 
 setup: $(STAMP)
 
-$(STAMP): pyproject.toml constraints.txt
+$(BUILD_STAMP): pyproject.toml constraints.txt
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	PIP_CONSTRAINT=constraints.txt $(BIN)/python -m pip install --quiet \
-		--disable-pip-version-check -e ".[workflow,test,dev,notebooks]"
+	$(PIP_INSTALL) -e ".[workflow,notebooks]"
+	touch $(BUILD_STAMP)
+
+$(STAMP): $(BUILD_STAMP)
+	$(PIP_INSTALL) -e ".[workflow,test,dev,notebooks]"
 	touch $(STAMP)
 
 test: $(STAMP)

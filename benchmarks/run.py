@@ -9,6 +9,9 @@
     over mu0 in [1e-12, 1e12] and t in [0, 1000]; `modal_terms` against `solve`.
 ``speed`` (benchmarks/speed.py)
     Run time of `turntable.solve` against scipy's solve_ivp and expm, with their errors.
+``fit`` (benchmarks/fit.py)
+    Time of one fit of a film (`turntable.fit`, the command ``turntable fit``); coverage of
+    the reported standard errors and accuracy of the model selection over random films.
 
 The build time of the workflow is measured separately by ``benchmarks/pipeline.py``.
 The references are those of `turntable.reference`.
@@ -33,11 +36,12 @@ if __name__ == "__main__":
 
 import _common
 import eigenvalues
+import fit
 import solution
 import speed
 
 #: The topics, in the order they run.
-TOPICS = (eigenvalues, solution, speed)
+TOPICS = (eigenvalues, solution, speed, fit)
 
 
 def main(argv: Sequence[str] | None = None) -> int:

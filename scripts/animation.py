@@ -1,3 +1,4 @@
+# %%
 """Animation: the ball on the turntable, slipping (left) and in the no-slip limit (right).
 
 Caption: top view of the plane turning at rate Omega (spokes; red: one marked spoke), the

@@ -1,3 +1,4 @@
+# %%
 """Compile paper/paper.typ into paper/paper.pdf with the typst Python package.
 
 Run by rule ``paper`` (workflow/rules/paper.smk). The sources, results/claims.json and the
@@ -9,6 +10,7 @@ tree is the provenance of this build (turntable.provenance: the commit that buil
 a dirty tree, versions) and the repository address, read by paper/provenance.typ.
 """
 
+# %%
 import json
 import logging
 import shutil

@@ -1,3 +1,4 @@
+# %%
 """Figure 1: the model.
 
 Caption: a ball (centre C at r) on a horizontal plane turning at the rate Omega about the

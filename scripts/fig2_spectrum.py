@@ -1,3 +1,4 @@
+# %%
 """Figure 2: the real parts alpha1, alpha2 and the frequency beta against mu0.
 
 Caption: growth rate alpha1 of the unstable modes, decay rate |alpha2| of the damped modes
@@ -33,7 +34,7 @@ for y, label, y_large in [
 ax.plot(
     mu0[lo], small.beta[lo], "k:", lw=1.0, label=r"small $\mu_0$: $\beta \approx \sqrt{\mu_0/2}$"
 )
-ax.plot([], [], "k--", lw=0.7, label=r"large $\mu_0$: expansion (3.2) in $1/\mu_0$")
+ax.plot([], [], "k--", lw=0.7, label=r"large $\mu_0$: first terms in $1/\mu_0$")
 ax.plot(peak.mu0, peak.alpha1, "o", color="C0", ms=4)
 ax.annotate(
     rf"max $\alpha_1 = {peak.alpha1:.4f}$" + "\n" + rf"at $\mu_0 = {peak.mu0:.4f}$",

@@ -1,3 +1,4 @@
+# %%
 """Figure 3: the growing and the decaying parts of x(t).
 
 Caption: the coordinate x(t) = x0 + x+(t) + x-(t) of the centre of the ball split as in

@@ -1,3 +1,4 @@
+# %%
 """Figure 4: trajectories of the centre of the ball for several friction coefficients.
 
 Caption: path (x(t), y(t)) of the centre for each mu0 of the configuration (initial state

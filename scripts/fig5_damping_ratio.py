@@ -1,3 +1,4 @@
+# %%
 """Figure 5: damping of the decaying modes over one period, against mu0.
 
 Caption: (a) log10 N, where N = exp(2 pi |alpha2| / beta) is the factor by which the

@@ -1,3 +1,4 @@
+# %%
 """Figure 6: the no-slip limit mu0 -> infinity of Section 3.
 
 Caption: (a) paths of the centre over one period 2 pi (k + 1)/k of the no-slip motion for

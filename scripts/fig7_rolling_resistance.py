@@ -1,3 +1,4 @@
+# %%
 """Figure 7: slipping with viscous friction against rolling with rolling resistance.
 
 Caption: top, path of the centre of the slipping ball (coefficient mu0, left) and of the

@@ -1,3 +1,4 @@
+# %%
 """Parameter study, one inertia ratio k: the claims of Section 2 on a grid of mu0.
 
 Writes results/study/k_<k>.json: alpha1, alpha2, beta, ln N, abs(alpha2)/beta and the log

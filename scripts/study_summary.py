@@ -1,3 +1,4 @@
+# %%
 """Parameter study, all inertia ratios: summary and figure.
 
 Caption: (a) growth rate alpha1 against mu0 for each k of the study, with the closed-form

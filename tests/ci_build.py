@@ -1,12 +1,14 @@
-"""One real build of part of the project, shared by the tests of the notebooks, the report,
-the README figure and the study (tests/test_notebooks.py, test_readme.py, test_study.py).
+"""Builds of the project shared by the tests, and the helpers to make them.
 
-The sources are copied into a temporary directory shared by all xdist workers of the
-session; the first worker to ask plans the whole workflow there (a dry run with the SLURM
-profile and the dry-run executor), then builds Fig. 1 with its notebook, the README
-figure (Fig. 4 copied to docs/) and the animation (copied to docs/), with the project's own
-configuration. A file lock makes
-the other workers wait for that build and reuse it.
+``shared_build``: the sources are copied into a temporary directory shared by all xdist
+workers of the session; the first worker to ask plans the whole workflow there (a dry run
+with the SLURM profile and the dry-run executor, for tests/test_study.py and
+test_notebooks.py) and builds the README figure (Fig. 4 copied to docs/, for
+tests/test_readme.py) with the project's own configuration. A file lock makes the other
+workers wait for that build and reuse it.
+
+``base_config``: the project's configuration cut down, for the builds of everything that
+take seconds (tests/test_pipeline.py).
 """
 
 from __future__ import annotations
@@ -18,18 +20,16 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+import yaml
 
 from shared_build import build_once, shared_dir
 
 ROOT = Path(__file__).resolve().parents[1]
 SNAKEMAKE = str(Path(sys.executable).with_name("snakemake"))
+# The one list of the figures (the workflow generates a rule for each).
+FIGURE_NAMES: list[str] = yaml.safe_load((ROOT / "workflow" / "figures.yaml").read_text())
 COPIED = ["Snakefile", "config", "workflow", "scripts", "paper", "src", "profiles"]
-TARGETS = [
-    "figures/fig1_schematic.png",
-    "results/notebooks/fig1_schematic.ipynb",
-    "readme_figure",
-    "readme_animation",
-]
+TARGETS = ["readme_figure"]
 
 
 def snakemake(workdir: Path, *args: str, timeout: float = 300) -> subprocess.CompletedProcess:
@@ -42,6 +42,33 @@ def snakemake(workdir: Path, *args: str, timeout: float = 300) -> subprocess.Com
         timeout=timeout,
         check=False,
     )
+
+
+def base_config() -> dict[str, Any]:
+    """The project's configuration cut down: fewer curves, samples and values of k, a low
+    PNG resolution (the animation as configured: docs/animation.gif is compared with it).
+
+    Every script still runs through all of its code; only the lists are shorter.
+    """
+    config = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())
+    config["style"]["dpi"] = 60
+    for name in FIGURE_NAMES:
+        if "n_points" in config.get(name, {}):
+            config[name]["n_points"] = min(config[name]["n_points"], 200)
+    config["fig3_modal_terms"]["mu0"] = [0.1]
+    config["fig4_trajectories"].update(mu0=[0.3, 1.0], t_span=[[0.0, 20.0], [0.0, 30.0]])
+    config["fig5_damping_ratio"]["k"] = [0.4]
+    config["fig6_limit"].update(mu0_trajectories=[10.0], mu0_layer=[100.0], n_error=3)
+    config["fig7_rolling_resistance"]["n_grid"] = 20
+    config["study"].update(k=[0.4], n_points=20, n_times=20)
+    config["film"].update(fps=30.0)
+    config["fig8_measurability"]["n_grid"] = 8
+    return config
+
+
+def write_config(workdir: Path, config: dict[str, Any]) -> None:
+    (workdir / "config").mkdir(parents=True, exist_ok=True)
+    (workdir / "config" / "config.yaml").write_text(yaml.safe_dump(config, sort_keys=False))
 
 
 def copy_sources(dest: Path) -> Path:
@@ -88,10 +115,13 @@ def shared_build(tmp_path_factory: pytest.TempPathFactory, worker_id: str) -> tu
 
 
 def job_counts(plan: str) -> dict[str, int]:
-    """The job table of a dry run: {rule: count}."""
-    counts = {}
-    for line in plan.splitlines():
+    """The job table of a dry run ("Job stats"): {rule: count}, without the total."""
+    counts: dict[str, int] = {}
+    table = plan.partition("Job stats:")[2]
+    for line in table.splitlines():
         words = line.split()
+        if words and words[0] == "total":
+            break
         if len(words) == 2 and words[1].isdigit():
             counts[words[0]] = int(words[1])
     return counts

@@ -9,18 +9,20 @@ import pytest
 import yaml
 from PIL import Image
 
-from ci_build import ROOT, copy_sources, shared_build, snakemake
+from ci_build import ROOT
+from test_pipeline import clean_build, interrupted_build, shared_tmp  # noqa: F401
 
 CONFIG = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())["animation"]
 MAX_BYTES = 5 * 1024 * 1024
 
 
-@pytest.fixture(scope="session")
-def built(tmp_path_factory: pytest.TempPathFactory, worker_id: str) -> Path:
-    """figures/animation.gif of the shared build (tests/ci_build.py)."""
-    workdir, record = shared_build(tmp_path_factory, worker_id)
-    assert record["build_returncode"] == 0, record["build_log"]
-    return workdir / "figures" / "animation.gif"
+@pytest.fixture(scope="module")
+def built(clean_build: Path) -> Path:  # noqa: F811
+    """figures/animation.gif of the clean build of tests/test_pipeline.py, whose animation
+    section is the project's."""
+    config = yaml.safe_load((clean_build / "config" / "config.yaml").read_text())
+    assert config["animation"] == CONFIG
+    return clean_build / "figures" / "animation.gif"
 
 
 def test_frames_and_size(built: Path) -> None:
@@ -42,11 +44,14 @@ def test_frames_and_size(built: Path) -> None:
     assert not np.array_equal(frames[1], frames[2])
 
 
-def test_two_builds_give_the_same_bytes(built: Path, tmp_path: Path) -> None:
-    workdir = copy_sources(tmp_path / "again")
-    result = snakemake(workdir, "figures/animation.gif", "--cores", "1")
-    assert result.returncode == 0, result.stdout + result.stderr
-    assert (workdir / "figures" / "animation.gif").read_bytes() == built.read_bytes()
+def test_two_builds_give_the_same_bytes(
+    built: Path,
+    interrupted_build: tuple[Path, dict],  # noqa: F811
+) -> None:
+    """The killed and resumed build of tests/test_pipeline.py draws the same animation."""
+    other, record = interrupted_build
+    assert record["returncode"] == 0, record["log"]
+    assert (other / "figures" / "animation.gif").read_bytes() == built.read_bytes()
 
 
 def test_readme_animation_is_the_pipeline_animation(built: Path) -> None:

@@ -40,7 +40,7 @@ def common() -> ModuleType:
 def test_every_topic_is_run_by_the_driver() -> None:
     run = _load("run")
     names = [topic.NAME for topic in run.TOPICS]
-    assert names == ["eigenvalues", "solution", "speed"]
+    assert names == ["eigenvalues", "solution", "speed", "fit"]
     for topic in run.TOPICS:
         assert callable(topic.run)
         assert callable(topic.print_result)

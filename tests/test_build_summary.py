@@ -4,26 +4,34 @@ from __future__ import annotations
 
 import importlib.util
 import json
+import re
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 
+from turntable.claims.report import summarize
+
 ROOT = Path(__file__).resolve().parents[1]
 TOOL = ROOT / "tools" / "build_summary.py"
 
 
-def _report(verdicts: dict[str, str]) -> dict:
-    counts: dict[str, int] = {}
-    for v in verdicts.values():
-        counts[v] = counts.get(v, 0) + 1
+def _report(verdicts: dict[str, str], added: tuple[str, ...] = ()) -> dict:
+    """A claims report as rule `claims` writes it (turntable.claims.report)."""
+    records = [
+        {
+            "id": c,
+            "verdict": v,
+            "source": "project" if c in added else "paper",
+            "summary": f"value of {c} " + "x" * 200,
+        }
+        for c, v in verdicts.items()
+    ]
     return {
         "order": list(verdicts),
-        "summary": counts | {"total": len(verdicts)},
-        "claims": {
-            c: {"verdict": v, "summary": f"value of {c} " + "x" * 200} for c, v in verdicts.items()
-        },
+        "summary": summarize(records),
+        "claims": {r["id"]: r for r in records},
     }
 
 
@@ -47,11 +55,21 @@ def test_lists_every_claim_that_is_not_confirmed(tmp_path: Path) -> None:
         "c.three": "failed",
         "d.four": "confirmed",
     }
-    out = _run(tmp_path, _report(verdicts), {"all_passed": True, "failed": [], "per_k": [1, 2]})
+    report = _report(verdicts, added=("d.four",))
+    out = _run(tmp_path, report, {"all_passed": True, "failed": [], "per_k": [1, 2]})
     lines = out.splitlines()
-    assert "claims: 4 checked: 2 confirmed, 1 refined, 1 failed" in lines
-    listed = [line for line in lines if line.startswith("  ")]
+    assert (
+        "claims: 4 checked: 2 confirmed, 1 refined, 0 corrected, 0 undecidable, 1 failed" in lines
+    )
+    # the paper's claims counted apart from the additions, every verdict of the paper's shown
+    assert (
+        "  (3 of the paper: 1 confirmed, 1 refined, 0 corrected, 0 undecidable, 1 failed; "
+        "1 addition: 1 confirmed)"
+    ) in lines
+    listed = [line for line in lines if re.match(r"  [a-z]+ +[a-z]\.", line)]
     assert [line.split()[:2] for line in listed] == [["refined", "b.two"], ["failed", "c.three"]]
+    # no Python dict or list printed as such
+    assert not re.search(r"[{}\[\]]|': ", out)
     assert all(len(line) <= 110 for line in lines)
     assert any("results/claims.md" in line for line in lines)
     assert "study: all checks hold for 2 values of k" in lines
@@ -59,8 +77,8 @@ def test_lists_every_claim_that_is_not_confirmed(tmp_path: Path) -> None:
 
 def test_all_confirmed_lists_none(tmp_path: Path) -> None:
     out = _run(tmp_path, _report({"a.one": "confirmed"}), None)
-    assert "claims: 1 checked: 1 confirmed" in out
-    assert not [line for line in out.splitlines() if line.startswith("  ")]
+    assert "claims: 1 checked: 1 confirmed, 0 refined, 0 corrected, 0 undecidable, 0 failed" in out
+    assert not [line for line in out.splitlines() if re.match(r"  [a-z]+ +[a-z]\.", line)]
 
 
 def test_missing_report_and_failed_study(tmp_path: Path) -> None:
@@ -76,4 +94,4 @@ def test_any_verdict_other_than_confirmed_is_listed(verdict: str) -> None:
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     lines = module.claims_lines(_report({"x.y": verdict}))
-    assert lines[1].split()[:2] == [verdict, "x.y"]
+    assert lines[2].split()[:2] == [verdict, "x.y"]

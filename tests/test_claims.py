@@ -25,6 +25,7 @@ import yaml
 import turntable
 from turntable import claims
 from turntable.claims import report
+from turntable.claims._core import within
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -83,6 +84,15 @@ def test_claim_has_its_expected_verdict(claim_id: str) -> None:
     assert result["verdict"] == expected, f"{claim_id}: {result['evidence']}"
     # Every bound is stated under the key of the reproduced value it bounds.
     assert set(result["tolerance"]) <= set(result["reproduced"]), claim_id
+    # The bounds are those the verdict rests on, and each holds: what makes a verdict
+    # refined, corrected or undecidable is stated as a bound that is met, never as one
+    # that is broken (only a failed verdict shows a broken bound).
+    unmet = {
+        key: (result["reproduced"][key], bound)
+        for key, bound in result["tolerance"].items()
+        if not within(result["reproduced"][key], bound)
+    }
+    assert unmet == {}, f"{claim_id}: bounds not met by a {result['verdict']} verdict"
 
 
 def test_verdicts_best_to_worst() -> None:
@@ -449,11 +459,24 @@ def test_a_zero_failed_summary_names_the_erratum() -> None:
         {"id": "c.d", "verdict": "corrected", "source": "paper"},
         {"id": "e.f", "verdict": "refined", "source": "project"},
     ]
-    line = report.summary_line(report.summarize(records))
+    summary = report.summarize(records)
+    line = report.summary_line(summary)
     assert "0 failed" in line
     assert "1 corrected" in line
     assert "Corrected: `c.d`" in line
-    assert "2 of the paper, 1 added by the reproduction" in line
+    # The paper's claims are counted apart from the additions.
+    assert (
+        "Of the 2 of the paper: 1 confirmed, 0 refined, 1 corrected, 0 undecidable, 0 failed; "
+        "of the 1 added by the reproduction: 1 refined." in line
+    )
+    assert summary["by_source"]["project"] == {
+        "confirmed": 0,
+        "refined": 1,
+        "corrected": 0,
+        "undecidable": 0,
+        "failed": 0,
+    }
+    assert summary["verdicts"] == list(claims.VERDICTS)
 
 
 def test_perturbed_rolling_spectrum_fails(monkeypatch: pytest.MonkeyPatch) -> None:

@@ -56,3 +56,36 @@ def test_paths_in_readme_exist() -> None:
         assert (ROOT / path).exists(), path
     for path in re.findall(r"`((?:scripts|workflow|src|tests|profiles)/[\w./-]+)`", README):
         assert (ROOT / path).exists() or "<" in path or "*" in path, path
+
+
+def test_readme_lists_every_figure_of_the_workflow() -> None:
+    """The table of outputs has a row for each figure the workflow draws."""
+    from test_pipeline import NAMES
+
+    for name in NAMES:
+        assert f"| `figures/{name}.{{pdf,png}}` |" in README, name
+    assert f"Figures 5–{len(NAMES)} are new" in README
+
+
+def test_readme_names_the_runtime_dependencies() -> None:
+    """Where the README says what `pip install .` needs, it names exactly the dependencies
+    of pyproject.toml."""
+    import tomllib
+
+    with open(ROOT / "pyproject.toml", "rb") as fh:
+        runtime = {
+            re.match(r"[A-Za-z0-9_.-]+", d).group(0)
+            for d in tomllib.load(fh)["project"]["dependencies"]
+        }
+    mentions = re.findall(r"`pip install \.`[^)]*", README)
+    assert len(mentions) == 2, mentions
+    for text in mentions:
+        named = set(
+            re.findall(
+                r"\b("
+                + "|".join(map(re.escape, runtime | {"matplotlib", "snakemake", "typst"}))
+                + r")\b",
+                text,
+            )
+        )
+        assert named == runtime, text

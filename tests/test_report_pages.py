@@ -3,16 +3,16 @@
 from __future__ import annotations
 
 import base64
+import io
 import re
-import shutil
 from pathlib import Path
+from types import SimpleNamespace
 
 import pytest
 import yaml
 
-from test_pipeline import NAMES, clean_build, run_snakemake, shared_tmp  # noqa: F401
-from turntable.claims import VERDICTS
-from turntable.claims.report import to_html
+from test_pipeline import NAMES, clean_build, shared_tmp  # noqa: F401
+from turntable.claims.report import summarize, to_html
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -21,6 +21,8 @@ def _fake_report() -> dict:
     verdicts = {"a.one": "confirmed", "b.two": "refined", "c.three": "failed"}
     claims = {
         cid: {
+            "id": cid,
+            "source": "project" if cid == "b.two" else "paper",
             "verdict": v,
             "where": {"label": "Sec. 2, Fig. 4"},
             "claim": f"claim <{cid}> & more",
@@ -29,11 +31,10 @@ def _fake_report() -> dict:
         }
         for cid, v in verdicts.items()
     }
-    summary = {v: sum(x == v for x in verdicts.values()) for v in VERDICTS}
     return {
         "order": list(verdicts),
         "claims": claims,
-        "summary": summary | {"total": 3},
+        "summary": summarize(list(claims.values())),
         "version": "0.1.0",
         "git_commit": "abc",
     }
@@ -49,7 +50,11 @@ def test_claims_page_has_one_row_per_claim_with_its_verdict() -> None:
         assert f"<code>{cid}</code>" in row
         assert re.search(rf'<b style="color:#[0-9a-f]{{6}}">{verdict}</b>', row)
     assert "claim &lt;a.one&gt; &amp; more" in page  # escaped
-    assert "3 claims: 1 confirmed, 1 refined, 1 failed" in page
+    assert (
+        "3 claims. Of the 2 of the paper: 1 confirmed, 0 refined, 0 corrected, 0 undecidable, "
+        "1 failed; of the 1 added by the reproduction: 1 refined. Failed: <code>c.three</code>."
+    ) in page
+    assert "<code>b.two</code> <i>(addition)</i>" in page
     assert "original paper" in page
 
 
@@ -60,12 +65,9 @@ def test_claims_page_is_in_the_report() -> None:
 
 
 @pytest.fixture(scope="module")
-def gallery(clean_build: Path, tmp_path_factory: pytest.TempPathFactory) -> str:  # noqa: F811
-    workdir = tmp_path_factory.mktemp("gallery") / "w"
-    shutil.copytree(clean_build, workdir, symlinks=True)
-    proc = run_snakemake(workdir, "results/figures.html")
-    assert proc.returncode == 0, proc.stdout + proc.stderr
-    return (workdir / "results" / "figures.html").read_text(encoding="utf-8"), workdir
+def gallery(clean_build: Path) -> tuple[str, Path]:  # noqa: F811
+    """results/figures.html of the clean build of tests/test_pipeline.py."""
+    return (clean_build / "results" / "figures.html").read_text(encoding="utf-8"), clean_build
 
 
 def test_every_figure_with_its_caption(gallery) -> None:
@@ -84,3 +86,55 @@ def test_every_figure_with_its_caption(gallery) -> None:
     text = re.sub(r"<[^>]+>", "", fig4.split("<figcaption>", 1)[1])
     for m in config["fig4_trajectories"]["mu0"]:
         assert str(m) in text, m
+
+
+# Captions of the report ----------------------------------------------------------------
+
+CAPTIONS = sorted((ROOT / "workflow" / "report").glob("*.rst"))
+
+#: Plain-text mathematics that a caption must typeset (with :math:) instead.
+ASCII_MATH = re.compile(
+    r"\b(mu0|alpha[12]?|beta|delta|Omega|omega|lambda|sigma|eps|pi)\b|\^-?\d|->|\|\w+\|"
+)
+
+
+def _docutils_messages(text: str) -> str:
+    """What docutils reports (level info and above) while rendering ``text`` as Snakemake does."""
+    from docutils.core import publish_parts
+
+    stream = io.StringIO()
+    publish_parts(
+        text,
+        writer="html",
+        settings_overrides={"report_level": 1, "halt_level": 5, "warning_stream": stream},
+    )
+    return stream.getvalue()
+
+
+def _rendered(rst: Path) -> str:
+    """The caption as Snakemake renders it: a Jinja template of the configuration."""
+    import jinja2
+
+    config = yaml.safe_load((ROOT / "config" / "config.yaml").read_text(encoding="utf-8"))
+    template = jinja2.Template(rst.read_text(encoding="utf-8"))
+    return template.render(snakemake=SimpleNamespace(config=config))
+
+
+@pytest.mark.parametrize("rst", CAPTIONS, ids=[p.stem for p in CAPTIONS])
+def test_caption_renders_without_docutils_messages(rst: Path) -> None:
+    """No error or warning of docutils (e.g. |alpha2| read as an undefined substitution)."""
+    assert _docutils_messages(_rendered(rst)) == "", rst.name
+
+
+@pytest.mark.parametrize("rst", CAPTIONS, ids=[p.stem for p in CAPTIONS])
+def test_caption_typesets_its_mathematics(rst: Path) -> None:
+    """Outside :math:`...` and ``literals``, no ASCII mathematics such as mu0 or |alpha2|."""
+    text = re.sub(r":math:`[^`]*`|``[^`]*``", " ", _rendered(rst))
+    assert ASCII_MATH.findall(text) == [], f"{rst.name}: {ASCII_MATH.findall(text)}"
+
+
+def test_a_broken_caption_is_noticed() -> None:
+    """The two tests above do catch an undefined substitution and plain-text mathematics."""
+    bad = "decays at the slipping |alpha2| for mu0 -> 0."
+    assert "Undefined substitution" in _docutils_messages(bad)
+    assert ASCII_MATH.findall(bad)

@@ -231,3 +231,19 @@ def test_matched_delta() -> None:
     )
     with pytest.raises(ValueError, match="comparison"):
         rolling.matched_delta(1.0, 0.4, "equal_speed")
+
+
+def test_one_slip_velocity_and_states_in_batches() -> None:
+    """The rolling model uses the package's slip velocity (one definition of u), and builds
+    states on the constraint for a batch as for one."""
+    assert rolling.slip_velocity is tt.slip_velocity
+    xyv = np.array([[1.0, 1.0, 0.3, -0.2], [0.5, -2.0, 0.0, 1.0]])
+    batch = rolling.state_on_constraint(xyv[None])
+    assert batch.shape == (1, 2, 6)
+    for i in range(2):
+        assert_allclose(batch[0, i], rolling.state_on_constraint(xyv[i]))
+    assert_allclose(rolling.slip_velocity(batch), 0.0, atol=1e-15)
+    with pytest.raises(ValueError, match="xyv"):
+        rolling.state_on_constraint([1.0, 2.0, 3.0])
+    with pytest.raises(ValueError, match="xyv"):
+        rolling.state_on_constraint(1.0)

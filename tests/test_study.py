@@ -240,5 +240,5 @@ def test_one_job_per_k_with_the_slurm_profile(
     assert len(study_jobs) == len(config["study"]["k"])
     runtime = profile["default-resources"]["runtime"]
     assert all(f"runtime={runtime}," in job for job in study_jobs)
-    notebook_runtime = profile["set-resources"]["notebook"]["runtime"]
-    assert all(f"runtime={notebook_runtime}," in j for j in jobs if j.startswith("notebook:"))
+    claims_runtime = profile["set-resources"]["claims"]["runtime"]
+    assert [f"runtime={claims_runtime}," in j for j in jobs if j.startswith("claims:")] == [True]

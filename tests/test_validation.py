@@ -14,6 +14,8 @@ from typing import Any
 
 import numpy as np
 import pytest
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 
 import turntable as tt
 
@@ -187,8 +189,7 @@ def test_overflow_is_refused_with_the_largest_time(
         func(z0, [0.0, 2.0 * bound], mu0, k)
     named = float(re.match(r"^t must be at most ([0-9.e+]+)", str(info.value)).group(1))
     assert 0.9 * bound < named <= bound
-    if func is tt.solve:
-        assert named == float(tt.max_time(mu0, k, z0))
+    assert float(tt.max_time(mu0, k, z0)) <= named
     with np.errstate(over="raise", invalid="raise", divide="raise", under="ignore"):
         z = np.asarray(func(z0, [0.0, named], mu0, k))
     assert np.all(np.isfinite(z))
@@ -197,11 +198,47 @@ def test_overflow_is_refused_with_the_largest_time(
 
 
 def test_max_time_broadcasts_without_an_initial_state() -> None:
-    """validation: max_time(mu0, k) over a grid is ln(DBL_MAX) / alpha1 elementwise."""
+    """validation: max_time(mu0, k) over a grid is ln(DBL_MAX) / alpha1 elementwise.
+
+    (Less a margin of 1e-10 in the exponent, which keeps exp(alpha1 t) finite when
+    alpha1 t is rounded up: a relative 1.4e-13.)
+    """
     mu0 = np.array([[1e-3], [1.0], [1e3]])
     k = np.array([0.05, 0.4, 1.0])
     expected = np.log(np.finfo(float).max) / tt.spectrum(mu0, k).alpha1
-    np.testing.assert_allclose(tt.max_time(mu0, k), expected, rtol=1e-15)
+    np.testing.assert_allclose(tt.max_time(mu0, k), expected, rtol=2e-13)
+    assert np.all(tt.max_time(mu0, k) < expected)
+
+
+@settings(max_examples=300, deadline=None)
+@given(
+    log10_mu0=st.floats(min_value=-12.0, max_value=12.0),
+    log10_k=st.floats(min_value=-6.0, max_value=0.0),
+    direction=st.lists(st.floats(min_value=-1.0, max_value=1.0), min_size=6, max_size=6),
+    log10_size=st.floats(min_value=-6.0, max_value=6.0),
+)
+def test_max_time_is_accepted_by_solve_and_modal_terms(
+    log10_mu0: float, log10_k: float, direction: list[float], log10_size: float
+) -> None:
+    """validation: at t = max_time(mu0, k, z0) solve and modal_terms both give finite values,
+    and a later time is refused by one of them (the workflow's configuration check relies on
+    this bound for every figure that draws the solution).
+    """
+    mu0, k = 10.0**log10_mu0, 10.0**log10_k
+    z0 = np.array(direction) * 10.0**log10_size
+    t_max = float(tt.max_time(mu0, k, z0))
+    assume(np.isfinite(t_max) and t_max > 0)
+    with np.errstate(over="raise", invalid="raise", divide="raise", under="ignore"):
+        for func in (tt.solve, tt.modal_terms):
+            assert np.all(np.isfinite(np.asarray(func(z0, [0.0, t_max], mu0, k))))
+    later = np.nextafter(t_max, np.inf) * (1 + 1e-12)
+    refused = 0
+    for func in (tt.solve, tt.modal_terms):
+        try:
+            func(z0, [later], mu0, k)
+        except ValueError:
+            refused += 1
+    assert refused >= 1
 
 
 @pytest.mark.parametrize("name", ["wz0", "g"])

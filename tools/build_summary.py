@@ -14,14 +14,30 @@ from pathlib import Path
 WIDTH = 110
 
 
+def _counts(verdicts: list[str], order: list[str]) -> str:
+    """'2 confirmed, 1 refined, 0 failed': every verdict of ``order``, then any other."""
+    names = order + sorted(set(verdicts) - set(order))
+    return ", ".join(f"{verdicts.count(v)} {v}" for v in names)
+
+
 def claims_lines(report: dict, table: str = "results/claims.md") -> list[str]:
-    """Verdict counts, then one line per claim whose verdict is not 'confirmed'."""
-    counts = {k: v for k, v in report["summary"].items() if k != "total"}
-    counted = ", ".join(f"{n} {verdict}" for verdict, n in counts.items() if n)
-    lines = [f"claims: {report['summary']['total']} checked: {counted}"]
+    """Verdict counts (all, then the paper's apart from the additions), then one line per
+    claim whose verdict is not 'confirmed', then where the full table is."""
+    claims = [report["claims"][cid] for cid in report["order"]]
+    order = list(report["summary"].get("verdicts", []))
+    verdicts = [c["verdict"] for c in claims]
+    lines = [f"claims: {len(claims)} checked: {_counts(verdicts, order)}"]
+    parts = []
+    for source in ("paper", "project"):
+        of_source = [c["verdict"] for c in claims if c.get("source", "paper") == source]
+        n = len(of_source)
+        if n:
+            words = "of the paper" if source == "paper" else "addition" + "s" * (n != 1)
+            shown = order if source == "paper" else [v for v in order if v in of_source]
+            parts.append(f"{n} {words}: {_counts(of_source, shown)}")
+    lines.append("  (" + "; ".join(parts) + ")")
     width = max((len(cid) for cid in report["order"]), default=0)
-    for cid in report["order"]:
-        claim = report["claims"][cid]
+    for cid, claim in zip(report["order"], claims, strict=True):
         if claim["verdict"] == "confirmed":
             continue
         line = f"  {claim['verdict']:<11} {cid:<{width}}  {claim['summary']}"

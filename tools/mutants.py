@@ -52,6 +52,9 @@ STUDY_KEYWORD = "not slurm"
 #: Tests of the claims registry.
 CLAIMS_TESTS = ("test_claims.py",)
 
+#: Tests of the fit of a film.
+FIT_TESTS = ("test_fit.py",)
+
 
 @dataclass(frozen=True)
 class Mutant:
@@ -313,6 +316,57 @@ MUTANTS = [
                 1,
             ),
         ),
+    ),
+    Mutant(
+        "fit-coefficient-column",
+        "the column d r / d ln c of the fit's Jacobian twice too large (standard errors halved)",
+        (("fit.py", "((up - down) / (2.0 * LOG_STEP))", "((up - down) / LOG_STEP)", 1),),
+        FIT_TESTS,
+    ),
+    Mutant(
+        "fit-no-nuisance",
+        "standard error of ln c without projecting out the initial state",
+        (
+            (
+                "fit.py",
+                "norm = float(np.linalg.norm(j_c - j_state @ coef))",
+                "norm = float(np.linalg.norm(j_c))",
+                1,
+            ),
+        ),
+        FIT_TESTS,
+    ),
+    Mutant(
+        "fit-clock",
+        "the fit forgets Omega: tau = t - t0 instead of Omega (t - t0)",
+        (
+            (
+                "fit.py",
+                "return setup.omega * t, xy / setup.radius",
+                "return t, xy / setup.radius",
+                1,
+            ),
+        ),
+        FIT_TESTS,
+    ),
+    Mutant(
+        "fit-delta-units",
+        "delta_dim = delta m R Omega instead of delta m R^2 Omega",
+        (
+            (
+                "fit.py",
+                '(1.0 if model == "slipping" else setup.radius**2)',
+                '(1.0 if model == "slipping" else setup.radius)',
+                1,
+            ),
+        ),
+        FIT_TESTS,
+    ),
+    Mutant(
+        "fit-expected-aic",
+        "expected AIC difference without the penalty of the two extra parameters",
+        (("fit.py", "/ (n - p_s)) - 2.0 * q,", "/ (n - p_s)) - q,", 1),),
+        FIT_TESTS,
     ),
 ]
 

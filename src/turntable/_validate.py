@@ -92,6 +92,10 @@ def times(name: str, value: ArrayLike, *, increasing: bool = False) -> NDArray[n
 #: Natural logarithm of the largest double: exp(x) overflows for x above it.
 LOG_MAX = float(np.log(np.finfo(float).max))
 
+#: Room left below LOG_MAX by `growth_limit`, so that rate * (room / rate) rounded up by
+#: a few units in the last place still gives a finite exp (those units are about 1e-13).
+_LOG_MARGIN = 1e-10
+
 
 def finite_scalar(name: str, value: ArrayLike) -> float:
     """Return ``value`` as a Python float that is finite (any sign)."""
@@ -105,10 +109,11 @@ def finite_scalar(name: str, value: ArrayLike) -> float:
 def growth_limit(rate: ArrayLike, scale: float = 1.0) -> NDArray[np.float64]:
     """Return the largest t at which ``scale * exp(rate * t)`` is still a finite double.
 
-    That is ``(LOG_MAX - ln max(1, scale)) / rate`` (infinite where rate <= 0).
+    That is ``(LOG_MAX - ln max(1, scale)) / rate`` (infinite where rate <= 0), less
+    1e-10 / rate, so that ``exp(rate * t)`` computed in doubles is finite up to it.
     """
     rate = np.asarray(rate, dtype=float)
-    room = LOG_MAX - max(0.0, float(np.log(scale))) if scale > 0 else LOG_MAX
+    room = LOG_MAX - _LOG_MARGIN - (max(0.0, float(np.log(scale))) if scale > 0 else 0.0)
     with np.errstate(divide="ignore"):
         return np.where(rate > 0, room / np.where(rate > 0, rate, 1.0), np.inf)
 

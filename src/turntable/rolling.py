@@ -83,6 +83,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from turntable import _validate
+from turntable.solution import slip_velocity
 from turntable.spectrum import _spectrum
 
 GAMMA = np.array([0.0, 0.0, 1.0])
@@ -246,34 +247,30 @@ def centre_decay_rate(delta: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
     return -spectrum(delta, k).sigma_c
 
 
-def slip_velocity(z: ArrayLike) -> NDArray[np.float64]:
-    """Return u = v + gamma x w - gamma x r, components (ux, uy).
-
-    Notes
-    -----
-    Constraint (R1); the same u as in the slipping model (Section 1).
-    """
-    z = _validate.states("z", z)
-    return np.stack([z[..., 2] - z[..., 5] + z[..., 1], z[..., 3] + z[..., 4] - z[..., 0]], axis=-1)
-
-
 def state_on_constraint(xyv: ArrayLike) -> NDArray[np.float64]:
     """Return the state (x, y, vx, vy, wx, wy) with w from the no-slip constraint.
 
     Parameters
     ----------
     xyv : array_like
-        Four finite numbers (x, y, vx, vy).
+        Finite numbers (x, y, vx, vy), shape (4,) or (..., 4) for several states.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (6,) or (..., 6).
 
     Notes
     -----
     (R1): w = r + i v, i.e. wx = x - vy, wy = y + vx.
     """
-    arr = _validate._as_float_array("xyv", xyv, "four finite numbers (x, y, vx, vy)")
-    if arr.shape != (4,) or not np.all(np.isfinite(arr)):
-        raise ValueError(f"xyv must be four finite numbers (x, y, vx, vy); got {xyv!r}")
-    x, y, vx, vy = arr
-    return np.array([x, y, vx, vy, x - vy, y + vx])
+    arr = _validate._as_float_array("xyv", xyv, "finite numbers (x, y, vx, vy)")
+    if arr.ndim == 0 or arr.shape[-1] != 4 or not np.all(np.isfinite(arr)):
+        raise ValueError(
+            f"xyv must be finite numbers (x, y, vx, vy), shape (4,) or (..., 4); got {xyv!r}"
+        )
+    x, y, vx, vy = np.moveaxis(arr, -1, 0)
+    return np.stack([x, y, vx, vy, x - vy, y + vx], axis=-1)
 
 
 class _Modes(NamedTuple):

@@ -4,37 +4,28 @@
 # either redraws it. Shown at the top of README.md (docs/animation.gif, rule
 # readme_animation in docs.smk) and in the HTML report.
 
-ANIMATION_INPUTS = (
-    STYLE_FILES
-    + [str(Path(workflow.basedir) / "scripts" / "_style" / "animation.py")]
-    + sorted(
-        str(p) for p in (Path(workflow.basedir) / "src" / "turntable").rglob("*.py")
-    )
-)
-
 
 rule animation:
     input:
-        ANIMATION_INPUTS,
+        code=PACKAGE + STYLE,
+        script=source("scripts/animation.py"),
     output:
-        gif=report(
-            "figures/animation.gif",
-            caption="../report/animation.rst",
-            category="Animation",
+        gif=ensure(
+            report(
+                "figures/animation.gif",
+                caption="../report/animation.rst",
+                category="Animation",
+            ),
+            non_empty=True,
         ),
+        notebook=notebook("animation"),
     log:
         "logs/animation.log",
+    benchmark:
+        "logs/benchmarks/animation.tsv"
     conda:
         "../envs/turntable.yaml"
     params:
-        k=config["animation"]["k"],
-        mu0=config["animation"]["mu0"],
-        state=config["animation"]["state"],
-        wz=config["animation"]["wz"],
-        t_end=config["animation"]["t_end"],
-        n_frames=config["animation"]["n_frames"],
-        substeps=config["animation"]["substeps"],
-        frame_ms=config["animation"]["frame_ms"],
-        size=config["animation"]["size"],
+        **config["animation"],
     script:
-        "../../scripts/animation.py"
+        NOTEBOOK_DRIVER

@@ -1,26 +1,23 @@
 # The claims registry (turntable.claims): every claim of the paper checked against independent
-# references, with a verdict. The package sources are inputs, so that editing the physics or
-# a check re-runs the rule. Paths of sources are taken from the repository (workflow.basedir),
-# so that the rule also runs with --directory elsewhere.
-
-CLAIMS_SOURCES = sorted(
-    str(p)
-    for pattern in ("*.py", "*.yaml")
-    for p in (Path(workflow.basedir) / "src" / "turntable").rglob(pattern)
-)
+# references, with a verdict. The package is an input, so that editing the physics or a check
+# reruns the rule.
 
 
 rule claims:
     input:
-        CLAIMS_SOURCES,
+        code=PACKAGE,
+        script=source("scripts/claims_report.py"),
     output:
-        json="results/claims.json",
-        md="results/claims.md",
+        json=ensure("results/claims.json", non_empty=True),
+        md=ensure("results/claims.md", non_empty=True),
+        notebook=notebook("claims_report"),
     log:
         "logs/claims.log",
+    benchmark:
+        "logs/benchmarks/claims.tsv"
     conda:
         "../envs/turntable.yaml"
     params:
         claims=config["claims"],
     script:
-        "../../scripts/claims_report.py"
+        NOTEBOOK_DRIVER

@@ -1,47 +1,58 @@
-# Configuration checks that the JSON schema cannot express, and paths shared by the rules.
+# Paths shared by the rules: the code every job depends on. (The configuration is checked by
+# workflow/config_checks.py.)
+import os
 from pathlib import Path
 
-from snakemake.exceptions import WorkflowError
 
-# Shared plotting module and matplotlib style: inputs of every figure rule, so that editing
-# either rebuilds the figures.
-STYLE_FILES = [
-    str(Path(workflow.basedir) / "scripts" / "_style" / "__init__.py"),
-    str(Path(workflow.basedir) / "scripts" / "_style" / "turntable.mplstyle"),
-]
-
-
-def _pairs(value):
-    """Yield (suffix, pair) for a [start, end] pair or a list of such pairs."""
-    if value and isinstance(value[0], list):
-        for i, pair in enumerate(value):
-            yield f"[{i}]", pair
-    else:
-        yield "", value
-
-
-def check_config(config):
-    """Raise WorkflowError unless every *_span and *_range pair is increasing.
-
-    Each top-level section of the configuration is named after the rule that reads it, so
-    the message names both the key and the rule. Also checks that fig4_trajectories gives
-    one time span per value of mu0.
+def source(path):
+    """A file of the repository (`path` relative to it), as a path relative to the working
+    directory: the same string wherever the work tree is moved or copied, so that Snakemake's
+    record of a job's inputs still matches. Also right with --directory elsewhere.
     """
-    for rule_name, section in config.items():
-        for key, value in section.items():
-            if not key.endswith(("_span", "_range")):
-                continue
-            for suffix, (start, end) in _pairs(value):
-                if not start < end:
-                    raise WorkflowError(
-                        f"Invalid configuration: {rule_name}.{key}{suffix} = [{start}, {end}] "
-                        f"must end after it starts (start < end); "
-                        f"used by rule {rule_name}."
-                    )
-    fig4 = config["fig4_trajectories"]
-    if len(fig4["t_span"]) != len(fig4["mu0"]):
-        raise WorkflowError(
-            f"Invalid configuration: fig4_trajectories.t_span has {len(fig4['t_span'])} "
-            f"entries but fig4_trajectories.mu0 has {len(fig4['mu0'])}; one time span per "
-            f"mu0 is needed by rule fig4_trajectories."
-        )
+    return os.path.relpath(Path(workflow.basedir, path))
+
+
+def sources(folder):
+    """Every file under `folder` of the repository (found by glob: a new module is included),
+    as paths from source(), compiled Python left out.
+    """
+    root = Path(workflow.basedir)
+    return sorted(
+        source(p.relative_to(root))
+        for p in Path(root, folder).rglob("*")
+        if p.is_file() and "__pycache__" not in p.parts
+    )
+
+
+# The package: an input of every job whose script imports turntable, so that editing any
+# file of src/turntable/ reruns every such job (and nothing else).
+PACKAGE = sources("src/turntable")
+# The shared plotting module and matplotlib style: inputs of every job that draws, so that
+# editing them redraws every figure (and nothing else).
+STYLE = sources("scripts/_style")
+
+# Each script of scripts/ runs once per job, as a Jupyter notebook, through this driver
+# (the rule's `script:`); the job writes the notebook with its outputs beside its other
+# outputs. A rule gives the script as input `script`, the code it depends on as input
+# `code`, and the notebook as output `notebook`: see notebook().
+NOTEBOOK_DRIVER = "../scripts/run_notebook.py"
+NOTEBOOKS = []
+
+
+def notebook(name, **wildcards):
+    """Output `notebook` of a job of scripts/<name>.py: results/notebooks/<name>.ipynb.
+
+    `name` may hold wildcards; give their values (lists) as keywords, so that target
+    `notebooks` lists every notebook.
+    """
+    path = f"results/notebooks/{name}.ipynb"
+    NOTEBOOKS.extend(expand(path, **wildcards))
+    return ensure(path, non_empty=True)
+
+
+# What a figure of workflow/figures.yaml needs beyond the rule that figures.smk generates for
+# it (its script, the package and the style as inputs; the PDF, the PNG and the notebook as
+# outputs; its section of the configuration and the resolution as params), by figure name:
+# {"input": {...}, "output": {...}, "params": {...}}, filled by the rules files included
+# before figures.smk (film.smk).
+FIGURE_EXTRAS = {}

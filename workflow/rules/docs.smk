@@ -12,11 +12,10 @@ rule readme_figure:
     log:
         "logs/readme_figure.log",
     localrule: True
-    run:
-        import shutil
-
-        shutil.copyfile(input[0], output[0])
-        Path(log[0]).write_text(f"copied {input[0]} to {output[0]}\n")
+    conda:
+        "../envs/turntable.yaml"
+    shell:
+        "cp {input:q} {output:q} && echo 'copied {input} to {output}' > {log:q}"
 
 
 # The animation at the top of README.md, docs/animation.gif: a copy of figures/animation.gif,
@@ -29,8 +28,7 @@ rule readme_animation:
     log:
         "logs/readme_animation.log",
     localrule: True
-    run:
-        import shutil
-
-        shutil.copyfile(input[0], output[0])
-        Path(log[0]).write_text(f"copied {input[0]} to {output[0]}\n")
+    conda:
+        "../envs/turntable.yaml"
+    shell:
+        "cp {input:q} {output:q} && echo 'copied {input} to {output}' > {log:q}"

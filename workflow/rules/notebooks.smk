@@ -1,32 +1,9 @@
-# Every script of scripts/ executed as a Jupyter notebook with its outputs, so that a reader
-# sees each figure next to the code that drew it: results/notebooks/<script>.ipynb.
-# The notebook of a script runs with the parameters, inputs and configuration of the rule
-# that runs the script; its outputs and log go to results/notebooks/<script>/, never to
-# figures/ or results/ proper. The rule of each script is looked up when the jobs are
-# planned (not at parse time), so rule files included after this one are seen too.
-include: "notebook_functions.smk"
+# `make notebooks` (target notebooks): every script of scripts/ executed as a Jupyter notebook
+# with its outputs, results/notebooks/<script>.ipynb, so that a reader sees each figure next
+# to the code that drew it. Each notebook is written by the job that runs its script (see
+# notebook() in common.smk and workflow/scripts/run_notebook.py): no script runs twice.
 
 
 rule notebooks:
     input:
         NOTEBOOKS,
-
-
-rule notebook:
-    input:
-        script="scripts/{name}.py",
-        runner="workflow/scripts/run_notebook.py",
-        rule_inputs=notebook_inputs,
-    output:
-        notebook="results/notebooks/{name}.ipynb",
-        files=directory("results/notebooks/{name}"),
-    log:
-        "logs/notebooks/{name}.log",
-    wildcard_constraints:
-        name="|".join(NOTEBOOK_NAMES),
-    conda:
-        "../envs/notebooks.yaml"
-    params:
-        spec=lambda wildcards: notebook_spec(wildcards.name),
-    script:
-        "../scripts/run_notebook.py"

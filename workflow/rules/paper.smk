@@ -1,23 +1,27 @@
 # The reproduction article: paper/paper.typ compiled with the typst Python package. Every number
 # in it is read from results/claims.json, which the PDF also carries as an attachment. The
-# sources are taken from the repository (workflow.basedir); the script compiles a copy of the
-# inputs, so that the rule also runs with --directory elsewhere.
+# script compiles a copy of the inputs, so that the rule also runs with --directory elsewhere.
 
-PAPER_DIR = Path(workflow.basedir) / "paper"
-PAPER_SOURCES = sorted(str(p) for p in PAPER_DIR.glob("*.typ")) + [
-    str(PAPER_DIR / "references.bib")
-]
+PAPER_SOURCES = sorted(
+    source(p)
+    for p in ["paper/references.bib", *Path(workflow.basedir).glob("paper/*.typ")]
+)
 
 
 rule paper:
     input:
+        code=PACKAGE,
+        script=source("scripts/build_paper.py"),
         sources=PAPER_SOURCES,
         claims="results/claims.json",
         figures=FIGURES,
     output:
-        "paper/paper.pdf",
+        pdf=ensure("paper/paper.pdf", non_empty=True),
+        notebook=notebook("build_paper"),
     log:
         "logs/paper.log",
+    benchmark:
+        "logs/benchmarks/paper.tsv"
     conda:
         "../envs/turntable.yaml"
     params:
@@ -25,4 +29,4 @@ rule paper:
         timestamp=config["paper"]["timestamp"],
         repository=config["paper"]["repository"],
     script:
-        "../../scripts/build_paper.py"
+        NOTEBOOK_DRIVER

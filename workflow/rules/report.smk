@@ -11,14 +11,20 @@ report: "../report/workflow.rst"
 rule claims_table:
     input:
         "results/claims.json",
+        code=PACKAGE,
     output:
-        report(
-            "results/claims.html",
-            caption="../report/claims.rst",
-            category="Claims",
+        ensure(
+            report(
+                "results/claims.html",
+                caption="../report/claims.rst",
+                category="Claims",
+            ),
+            non_empty=True,
         ),
     log:
         "logs/claims_table.log",
+    benchmark:
+        "logs/benchmarks/claims_table.tsv"
     conda:
         "../envs/turntable.yaml"
     script:
@@ -29,18 +35,20 @@ rule claims_table:
 rule figure_gallery:
     input:
         pngs=expand("figures/{name}.png", name=FIGURE_NAMES),
-        captions=expand(
-            str(Path(workflow.basedir) / "workflow" / "report" / "{name}.rst"),
-            name=FIGURE_NAMES,
-        ),
+        captions=[source(f"workflow/report/{name}.rst") for name in FIGURE_NAMES],
     output:
-        report(
-            "results/figures.html",
-            caption="../report/figures.rst",
-            category="Overview",
+        ensure(
+            report(
+                "results/figures.html",
+                caption="../report/figures.rst",
+                category="Overview",
+            ),
+            non_empty=True,
         ),
     log:
         "logs/figure_gallery.log",
+    benchmark:
+        "logs/benchmarks/figure_gallery.tsv"
     conda:
         "../envs/turntable.yaml"
     params:

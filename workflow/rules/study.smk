@@ -13,10 +13,16 @@ STUDY_OUTPUTS = [
 
 
 rule study_k:
+    input:
+        code=PACKAGE,
+        script=source("scripts/study_k.py"),
     output:
-        "results/study/k_{k}.json",
+        json=ensure("results/study/k_{k}.json", non_empty=True),
+        notebook=notebook("study_k_{k}", k=STUDY_K),
     log:
         "logs/study/k_{k}.log",
+    benchmark:
+        "logs/benchmarks/study_k_{k}.tsv"
     wildcard_constraints:
         k="|".join(re.escape(k) for k in STUDY_K),
     conda:
@@ -28,26 +34,33 @@ rule study_k:
         t_span=config["study"]["t_span"],
         n_times=config["study"]["n_times"],
     script:
-        "../../scripts/study_k.py"
+        NOTEBOOK_DRIVER
 
 
 rule study:
     input:
+        code=PACKAGE + STYLE,
+        script=source("scripts/study_summary.py"),
         results=expand("results/study/k_{k}.json", k=STUDY_K),
-        style=STYLE_FILES,
     output:
-        json="results/study/summary.json",
-        pdf="results/study/summary.pdf",
-        png=report(
-            "results/study/summary.png",
-            caption="../report/study.rst",
-            category="Parameter study",
+        json=ensure("results/study/summary.json", non_empty=True),
+        pdf=ensure("results/study/summary.pdf", non_empty=True),
+        png=ensure(
+            report(
+                "results/study/summary.png",
+                caption="../report/study.rst",
+                category="Parameter study",
+            ),
+            non_empty=True,
         ),
+        notebook=notebook("study_summary"),
     log:
         "logs/study/summary.log",
+    benchmark:
+        "logs/benchmarks/study.tsv"
     conda:
         "../envs/turntable.yaml"
     params:
         dpi=config["style"]["dpi"],
     script:
-        "../../scripts/study_summary.py"
+        NOTEBOOK_DRIVER

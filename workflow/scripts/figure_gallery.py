@@ -4,7 +4,7 @@ Run by rule ``figure_gallery`` (workflow/rules/report.smk); the page is part of 
 report (category "Overview"), where otherwise a figure's caption shows only beside the
 figure opened on its own. Captions are the report's own (workflow/report/<figure>.rst,
 Jinja templates of the configuration, rendered as Snakemake renders them, then RST to HTML
-with docutils); the PNGs are embedded, so the page is self-contained.
+with docutils, which stops at any warning); the PNGs are embedded, so the page is self-contained.
 """
 
 import base64
@@ -24,7 +24,8 @@ for name, png, rst in zip(
     snakemake.params.names, snakemake.input.pngs, snakemake.input.captions, strict=True
 ):
     text = jinja2.Template(Path(rst).read_text(encoding="utf-8")).render(snakemake=context)
-    caption = publish_parts(text, writer_name="html", settings_overrides={"report_level": 5})
+    # A caption docutils cannot read (an undefined |substitution|, a broken role) stops the job.
+    caption = publish_parts(text, writer="html", settings_overrides={"halt_level": 2})
     data = base64.b64encode(Path(png).read_bytes()).decode("ascii")
     sections.append(
         f'<figure id="{name}"><img src="data:image/png;base64,{data}" alt="{name}">'

@@ -1,83 +1,132 @@
-"""Execute one script of scripts/ as a Jupyter notebook and save it with its outputs.
+"""Run one script of scripts/ as a Jupyter notebook: the job's one execution of the script.
 
-Run by rule ``notebook`` (workflow/rules/notebooks.smk). The script is read with jupytext
-(its ``# %%`` cells become notebook cells); a first cell defines a ``snakemake`` object
-equivalent to the one the script gets from its own rule (same inputs, parameters and
-configuration; outputs and log redirected into results/notebooks/<script>/); a last cell
-shows the PNG and Markdown files the script wrote. The notebook is executed with nbclient
-on the project's Python (the ``python3`` kernel of the running interpreter).
+The ``script:`` of every rule that runs a script of scripts/ (see workflow/rules/common.smk).
+The script (input ``script``) is read with jupytext, its ``# %%`` cells becoming notebook
+cells and its docstring a Markdown cell. A first code cell defines the job's ``snakemake``
+object from plain values (its inputs but the code, its outputs but the notebook, log,
+parameters, wildcards and configuration); a last one shows what the script wrote. The
+notebook is executed once, with nbclient, on a kernel of this interpreter, and saved with its
+outputs as output ``notebook``: the outputs of the job are those the notebook wrote.
+
+The first cell holds a switch: run by this driver (environment variable TURNTABLE_NOTEBOOK
+names the notebook), it writes the job's outputs; run by hand, it writes them and the log under
+results/notebooks/<name>/ instead. The cell saved is the cell executed. Cell ids are the cell's
+index, and no timing is recorded, so that two runs write the same bytes. A failing cell ends
+the job with its traceback, without colour codes.
+
+Snakemake's own ``notebook:`` directive is not used: it runs .ipynb files only, not jupytext
+scripts, and its first cell holds a pickled object and an absolute path.
 """
 
-import json
-import logging
 import os
-import pprint
+import signal
 import sys
-import time
+import tempfile
 from pathlib import Path
+
+from jupyter_client.manager import AsyncKernelManager
+from jupyter_core.utils import run_sync
+
+SCRIPT = Path(snakemake.input.script)
+NOTEBOOK = Path(snakemake.output.notebook)
+
+# The kernel, started first, so that it boots while the notebook is made: this interpreter
+# (python3 is the kernel of the first python on PATH), over IPC sockets in a temporary
+# folder (TCP would warn that it is not encrypted), no history file, and, as in a script, a
+# cell's last value not echoed (its repr may hold a memory address).
+os.environ["PATH"] = f"{Path(sys.executable).parent}{os.pathsep}{os.environ.get('PATH', '')}"
+tmp = tempfile.TemporaryDirectory()
+kernel_err = open(Path(tmp.name, "kernel.err"), "w+")  # noqa: SIM115 (closed at the end)
+kernel = AsyncKernelManager(
+    kernel_name="python3", transport="ipc", ip=str(Path(tmp.name, "kernel"))
+)
+run_sync(kernel.start_kernel)(
+    extra_arguments=[
+        "--HistoryManager.enabled=False",
+        "--InteractiveShell.ast_node_interactivity=none",
+    ],
+    env=os.environ
+    | {"TURNTABLE_NOTEBOOK": NOTEBOOK.as_posix(), "PYDEVD_DISABLE_FILE_VALIDATION": "1"},
+    cwd=os.getcwd(),
+    stderr=kernel_err,
+)
+
+import ast
+import pprint
+import re
 
 import jupytext
 import nbformat
 from nbclient import NotebookClient
 
-logging.basicConfig(filename=snakemake.log[0], level=logging.INFO, filemode="w")
-spec = snakemake.params.spec
-root = Path.cwd()
+# Inputs the script does not read: its own source and the code the job depends on.
+NOT_SHOWN_INPUTS = {"script", "code"}
 
-PREAMBLE = """\
-# The `snakemake` object that rule {rule} passes to {script}: same inputs,
-# parameters and configuration, but the outputs and the log go to
-# {outdir}/, so running this notebook never touches figures/ or results/.
+PREAMBLE = '''\
+# The `snakemake` object that rule {rule} gives {script}.
+# Run by the workflow, this notebook wrote the job's outputs. Run by hand, it writes
+# them, and the log, under OUT = {outdir}/
+# instead, so that it never overwrites what the workflow built.
+# (Inputs left out: the script and the code the job depends on.)
 import os
 import sys
 from pathlib import Path
+from types import SimpleNamespace
 
-from snakemake.iocontainers import InputFiles, Log, Namedlist, OutputFiles, Params, Snakemake
-from snakemake.iocontainers import Wildcards
-
-while not Path("Snakefile").exists() and Path.cwd() != Path.cwd().parent:
-    os.chdir("..")  # run from the project root, wherever the notebook was opened
-sys.path.insert(0, "scripts")
-
-
-def _namedlist(cls, *items, _ranges=(), **named):
-    \"\"\"A Snakemake Namedlist: unnamed items, then named ones (names in _ranges: lists).\"\"\"
-    namedlist = cls(toclone=items)
-    for name, value in named.items():
-        start = len(namedlist)
-        namedlist.extend(value if name in _ranges else [value])
-        namedlist._set_name(name, start, len(namedlist) if name in _ranges else None)
-    return namedlist
+BY_WORKFLOW = os.environ.get("TURNTABLE_NOTEBOOK") == "{notebook}"
+if not BY_WORKFLOW:  # Jupyter starts in the notebook's folder: go up to the project
+    while not Path("{notebook}").exists() and Path.cwd() != Path.cwd().parent:
+        os.chdir("..")
+OUT = "" if BY_WORKFLOW else "{outdir}/"
 
 
-config = {config}
+class Named(list):
+    """Like Snakemake's input, output, log and params: a list whose items may have names,
+    read as attributes (output.pdf) or keys (output["pdf"])."""
 
-snakemake = Snakemake(
-    input_={input},
+    def __getitem__(self, key):
+        return getattr(self, key) if isinstance(key, str) else list(self)[key]
+
+
+def named(*items, _files=True, **names):
+    """A Named list: the unnamed items, then the named ones (a named list of files counts
+    as several items, a named parameter as one)."""
+    result = Named(items)
+    for key, value in names.items():
+        setattr(result, key, value)
+        result.extend(value if _files and isinstance(value, list) else [value])
+    return result
+
+
+snakemake = SimpleNamespace(
+    rule={rule!r},
+    input={input},
     output={output},
+    log={log},
     params={params},
     wildcards={wildcards},
-    threads=1,
-    resources=Namedlist(fromdict={{"_cores": 1, "_nodes": 1}}),
-    log={log},
-    config=config,
-    rulename={rule!r},
-    bench_iteration=None,
-    scriptdir=str(Path("scripts").resolve()),
+    threads={threads},
+    scriptdir=str(Path({scriptdir!r}).resolve()),
+    config={config},
 )
-for _path in [*snakemake.output, *snakemake.log]:
-    Path(_path).parent.mkdir(parents=True, exist_ok=True)
-"""
+sys.path.insert(0, snakemake.scriptdir)  # where the scripts' shared module _style is
+for path in [*snakemake.output, *snakemake.log]:
+    Path(path).parent.mkdir(parents=True, exist_ok=True)
+'''
 
 SHOW = """\
-# The files the script wrote: figures inline, Markdown rendered.
-from IPython.display import Image, Markdown, display
+# What the script wrote: figures inline, Markdown rendered, the size of other files; its log.
+from IPython.display import Image, Markdown, Pretty, display
 
-for _path in snakemake.output:
-    if _path.endswith(".png"):
-        display(Image(filename=_path, width=700))
-    elif _path.endswith(".md"):
-        display(Markdown(Path(_path).read_text()))
+for path in map(Path, snakemake.output):
+    if path.suffix == ".png":
+        display(Image(filename=path, width=700))
+    elif path.suffix == ".md":
+        display(Markdown(path.read_text()))
+    else:
+        display(Markdown(f"`{path}`: {path.stat().st_size} bytes"))
+for path in map(Path, snakemake.log):
+    display(Pretty(f"{path}:\\n{path.read_text()}"))
 """
 
 
@@ -87,67 +136,103 @@ def literal(value: object, indent: int) -> str:
     return text.replace("\n", "\n" + " " * indent)
 
 
-def namedlist_call(cls: str, entries: list) -> str:
-    """Source of a ``_namedlist(...)`` call rebuilding one Namedlist of the rule."""
-    unnamed = [value for name, value, _ in entries if name is None]
-    named = [(name, value) for name, value, _ in entries if name is not None]
-    ranges = [name for name, _, is_range in entries if is_range]
-    args = [cls] + [literal(v, 8) for v in unnamed]
-    args += [f"{name}={literal(value, 9 + len(name))}" for name, value in named]
-    if ranges:
-        args.append(f"_ranges={tuple(ranges)!r}")
-    return "_namedlist(\n        " + ",\n        ".join(args) + ",\n    )"
+def split(named_list: object, files: bool) -> tuple[list, dict]:
+    """The unnamed items and the named ones of a Snakemake input, output, log or params.
+
+    Snakemake, like a Python call, puts the unnamed items first.
+    """
+    named = {
+        key: [str(v) for v in value] if files and isinstance(value, list) else value
+        for key, value in named_list.items()
+    }
+    count = sum(len(v) if files and isinstance(v, list) else 1 for v in named.values())
+    unnamed = list(named_list)[: len(named_list) - count]
+    return ([str(v) for v in unnamed] if files else unnamed), named
 
 
-nb = jupytext.read(spec["script"], fmt="py:percent")
-intro = nbformat.v4.new_markdown_cell(
-    f"`{spec['script']}`, run as a notebook with the parameters of rule `{spec['rule']}` "
-    f"(see `README.md`). The first cell stands in for the Snakemake workflow; the others "
-    f"are the script's own cells; the last one shows what it wrote."
+def named_call(
+    named_list: object, files: bool = True, leave_out: set = frozenset(), out: bool = False
+) -> str:
+    """Source of a ``named(...)`` call holding the items of `named_list` as plain values.
+
+    With `out`, every path is written ``OUT + "path"`` (redirected when run by hand).
+    """
+    unnamed, named = split(named_list, files)
+
+    def show(value: object, indent: int) -> str:
+        if out and isinstance(value, list):
+            return "[" + ", ".join(show(v, indent) for v in value) + "]"
+        if out:
+            return f"OUT + {value!r}"
+        return literal(value, indent)
+
+    args = [show(v, 8) for v in unnamed]
+    args += [f"{k}={show(v, 9 + len(k))}" for k, v in named.items() if k not in leave_out]
+    if not args:
+        return "named()"
+    if not files:
+        args.append("_files=False")
+    return "named(\n        " + ",\n        ".join(args) + ",\n    )"
+
+
+def docstring_as_markdown(cell: nbformat.NotebookNode) -> nbformat.NotebookNode:
+    """The script's docstring cell as Markdown (instead of a string echoed as output)."""
+    body = ast.parse(cell.source).body
+    value = body[0].value if len(body) == 1 and isinstance(body[0], ast.Expr) else None
+    if isinstance(value, ast.Constant) and isinstance(value.value, str):
+        return nbformat.v4.new_markdown_cell(f"`scripts/{SCRIPT.name}`: {value.value}")
+    return cell
+
+
+outdir = f"results/notebooks/{NOTEBOOK.stem}"
+preamble = PREAMBLE.format(
+    rule=snakemake.rule,
+    script=f"scripts/{SCRIPT.name}",
+    notebook=NOTEBOOK.as_posix(),
+    outdir=outdir,
+    input=named_call(snakemake.input, leave_out=NOT_SHOWN_INPUTS),
+    output=named_call(snakemake.output, leave_out={"notebook"}, out=True),
+    log=named_call(snakemake.log, out=True),
+    params=named_call(snakemake.params, files=False),
+    wildcards=named_call(snakemake.wildcards, files=False),
+    threads=snakemake.threads,
+    scriptdir=os.path.relpath(SCRIPT.parent),
+    config=literal(dict(snakemake.config), len("    config=")),
 )
-preamble = nbformat.v4.new_code_cell(
-    PREAMBLE.format(
-        rule=spec["rule"],
-        script=spec["script"],
-        outdir=spec["outdir"],
-        input=namedlist_call("InputFiles", spec["input"]),
-        output=namedlist_call("OutputFiles", spec["output"]),
-        params=namedlist_call("Params", spec["params"]),
-        wildcards=namedlist_call("Wildcards", spec["wildcards"]),
-        log=namedlist_call("Log", spec["log"]),
-        config=literal(dict(snakemake.config), len("config = ")),
-    )
-)
-nb.cells = [intro, preamble, *nb.cells, nbformat.v4.new_code_cell(SHOW)]
+
+nb = jupytext.read(SCRIPT, fmt="py:percent")
+cells = [docstring_as_markdown(c) if c.cell_type == "code" else c for c in nb.cells[:1]]
+nb.cells = [
+    nbformat.v4.new_code_cell(preamble),
+    *cells,
+    *nb.cells[1:],
+    nbformat.v4.new_code_cell(SHOW),
+]
+for index, cell in enumerate(nb.cells):
+    cell.id = f"cell-{index}"
+    cell.metadata = {}
 nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
 
-Path(snakemake.output.files).mkdir(parents=True, exist_ok=True)
-env_path = os.environ.get("PATH", "")
-os.environ["PATH"] = f"{Path(sys.executable).parent}{os.pathsep}{env_path}"
-os.environ.setdefault("PYDEVD_DISABLE_FILE_VALIDATION", "1")
-start = time.perf_counter()
-client = NotebookClient(
-    nb,
-    kernel_name="python3",
-    timeout=900,
-    record_timing=False,
-    resources={"metadata": {"path": str(root)}},
-)
-client.execute()
-images = sum(
-    "image/png" in out.get("data", {})
-    for cell in nb.cells
-    if cell.cell_type == "code"
-    for out in cell.outputs
-)
-tmp = Path(snakemake.output.notebook).with_suffix(".ipynb.partial")
-nbformat.write(nb, tmp)
-os.replace(tmp, snakemake.output.notebook)
-logging.info(
-    "executed %s in %.1f s: %d cells, %d images; %s",
-    spec["script"],
-    time.perf_counter() - start,
-    len(nb.cells),
-    images,
-    json.dumps({"outputs": [value for _, value, _ in spec["output"]]}),
-)
+client = NotebookClient(nb, km=kernel, timeout=1800, record_timing=False)
+try:
+    client.execute()
+except Exception as err:  # the traceback without colour codes, and what the kernel said
+    kernel_err.seek(0)
+    errors = [o for c in nb.cells for o in c.get("outputs", []) if o.output_type == "error"]
+    message = "\n".join(errors[-1].traceback) if errors else str(err)
+    message = re.sub(r"\x1b\[[0-9;]*m", "", message)
+    raise SystemExit(
+        f"{SCRIPT} failed, run as a notebook (In[1] is the snakemake object):\n"
+        f"{message.strip()}\n{kernel_err.read()}"
+    ) from None
+finally:  # the kernel killed at once, not shut down: every cell has finished by then
+    if client.kc is not None:
+        client.kc.stop_channels()
+    run_sync(kernel.signal_kernel)(signal.SIGKILL)
+    run_sync(kernel.cleanup_resources)()
+    kernel_err.close()
+    tmp.cleanup()
+
+tmp_notebook = NOTEBOOK.with_name(f".{NOTEBOOK.name}.partial")
+nbformat.write(nb, tmp_notebook)
+os.replace(tmp_notebook, NOTEBOOK)

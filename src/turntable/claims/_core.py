@@ -203,6 +203,8 @@ class Outcome:
         The bounds against which the verdict was decided, under the key of the
         reproduced value each bounds: a number (the value is at most that) or
         ``{relation: limit}`` (see `within`). Every key is a key of ``reproduced``.
+        Unless the verdict is ``failed`` every bound holds: what makes a verdict
+        ``refined``, ``corrected`` or ``undecidable`` is stated as a bound that holds.
     summary : str
         One line for the table: the main reproduced numbers.
     evidence : str

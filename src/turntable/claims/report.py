@@ -9,6 +9,7 @@ person reads.  Both are deterministic: keys are sorted, floats are rounded to
 from __future__ import annotations
 
 import json
+import re
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
@@ -38,12 +39,32 @@ def git_commit(cwd: str | Path | None = None) -> str:
     return git_state(cwd)[0]
 
 
+#: The two sources of a claim: the paper's statements and the reproduction's additions.
+SOURCES: dict[str, str] = {"paper": "of the paper", "project": "added by the reproduction"}
+
+
 def summarize(records: list[Mapping[str, Any]]) -> dict[str, Any]:
-    """Count the records per verdict and per source, and list the ids of each verdict."""
+    """Count the records per verdict, per source and per verdict within each source.
+
+    Returns
+    -------
+    dict
+        ``<verdict>`` (count over all records, for each of `VERDICTS`), ``total``,
+        ``paper`` and ``project`` (count per source), ``by_source`` (source -> verdict ->
+        count: the paper's claims counted apart from the reproduction's additions),
+        ``verdicts`` (the verdicts from best to worst) and ``ids`` (verdict -> ids).
+    """
     counts: dict[str, Any] = {v: sum(r["verdict"] == v for r in records) for v in VERDICTS}
     counts["total"] = len(records)
-    for source in ("paper", "project"):
+    for source in SOURCES:
         counts[source] = sum(r["source"] == source for r in records)
+    counts["by_source"] = {
+        source: {
+            v: sum(r["source"] == source and r["verdict"] == v for r in records) for v in VERDICTS
+        }
+        for source in SOURCES
+    }
+    counts["verdicts"] = list(VERDICTS)
     counts["ids"] = {v: [r["id"] for r in records if r["verdict"] == v] for v in VERDICTS}
     return counts
 
@@ -108,14 +129,18 @@ def _paper_value(value: Mapping[str, Any] | None) -> str:
 def summary_line(summary: Mapping[str, Any]) -> str:
     """Return the counts of a report in words, naming every claim that is not confirmed.
 
-    Every verdict is counted, the paper's claims apart from the reproduction's additions,
-    and the ids of corrected, undecidable and failed claims are named, so that a count of
-    0 failed never hides an erratum.
+    The paper's claims are counted apart from the reproduction's additions, every verdict
+    of the paper's claims is counted (also when 0), and the ids of corrected, undecidable
+    and failed claims are named, so that a count of 0 failed never hides an erratum.
     """
-    counts = ", ".join(f"{summary[v]} {v}" for v in VERDICTS)
+    paper = summary["by_source"]["paper"]
+    added = summary["by_source"]["project"]
     text = (
-        f"{summary['total']} claims ({summary['paper']} of the paper, {summary['project']} "
-        f"added by the reproduction): {counts}."
+        f"{summary['total']} claims. Of the {summary['paper']} {SOURCES['paper']}: "
+        + ", ".join(f"{paper[v]} {v}" for v in VERDICTS)
+        + f"; of the {summary['project']} {SOURCES['project']}: "
+        + (", ".join(f"{added[v]} {v}" for v in VERDICTS if added[v]) or "none")
+        + "."
     )
     for v in ("corrected", "undecidable", "failed"):
         if summary["ids"][v]:
@@ -184,6 +209,11 @@ def to_markdown(report: Mapping[str, Any]) -> str:
     return "\n".join(lines) + "\n"
 
 
+def _code_ids(text: str) -> str:
+    """HTML: the `id` spans of a summary line as <code> elements."""
+    return re.sub(r"`([^`]+)`", r"<code>\1</code>", text)
+
+
 _VERDICT_COLOURS = {
     "confirmed": "#1b7837",
     "refined": "#b35806",
@@ -201,14 +231,13 @@ def to_html(report: Mapping[str, Any]) -> str:
     """
     from html import escape
 
-    s = report["summary"]
-    counts = ", ".join(f"{s[v]} {v}" for v in VERDICTS if s.get(v))
     rows = []
     for cid in report["order"]:
         c = report["claims"][cid]
         colour = _VERDICT_COLOURS.get(c["verdict"], "#000000")
         cells = (
-            f"<code>{escape(cid)}</code>",
+            f"<code>{escape(cid)}</code>"
+            + (" <i>(addition)</i>" if c["source"] == "project" else ""),
             escape(str(c["where"]["label"])),
             escape(str(c["claim"])),
             escape(_paper_value(c["paper_value"])),
@@ -227,9 +256,12 @@ def to_html(report: Mapping[str, Any]) -> str:
         "td,th{border:1px solid #ccc;padding:4px 6px;text-align:left;vertical-align:top}"
         "</style></head><body>\n"
         "<h1>Claims of Ivanova (2019) and their reproduction</h1>\n"
-        f"<p>{s['total']} claims: {escape(counts)}. turntable {escape(report['version'])}, "
+        f"<p>{_code_ids(escape(summary_line(report['summary'])))} "
+        f"turntable {escape(report['version'])}, "
         f"commit <code>{escape(report['git_commit'])}</code>. Sections, equations and "
-        "figures in the second column are those of the original paper.</p>\n"
+        "figures in the second column are those of the original paper; a claim the "
+        "reproduction adds is marked <i>(addition)</i>, its location says what in the paper "
+        "it builds on.</p>\n"
         f"<table>\n<thead><tr>{head}</tr></thead>\n<tbody>\n"
         + "\n".join(rows)
         + "\n</tbody>\n</table>\n</body></html>\n"

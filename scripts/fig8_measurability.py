@@ -1,0 +1,71 @@
+# %%
+"""Figure 8: what a camera can measure on a ball slipping on a turntable.
+
+Caption: (a) relative standard error of mu0 reachable with the configured camera (section
+film) against mu0, and of delta for a ball rolling without slipping against delta (the
+Cramer-Rao bound of turntable.fit.predicted_stderr, the initial state unknown). (b) rms
+distance per coordinate between the slipping ball's path and the closest rolling path,
+over the tracking noise, and the probability that AIC selects the slipping model. Shaded:
+where that probability is below the configured level, the two mechanisms cannot be told
+apart. Also writes the numbers to results/film/measurability.json.
+"""
+
+# %%
+import json
+import os
+from pathlib import Path
+
+import numpy as np
+
+from _style import DOUBLE, save, setup, subplots
+from turntable import film, fit
+
+setup(snakemake)
+p = snakemake.params
+rig = film.rig_from_config(p.film)
+mu0 = np.geomspace(*p.mu0_range, p.n_grid)
+table = fit.measurability(mu0, rig.state0, rig.setup, rig.camera)
+limit = fit.indistinguishable_above(table, p.selection_probability)
+out = Path(snakemake.output.json)
+tmp = out.with_name(f".{out.name}.partial")
+tmp.write_text(json.dumps(fit.measurability_json(table, p.selection_probability, rig), indent=1))
+os.replace(tmp, out)
+
+# %%
+fig, ((ax_se, ax_d),) = subplots(1, 2, (DOUBLE, 3.0), (0.6, 0.55, 0.45, 0.3), (0.9, 0.5))
+ax_se.loglog(mu0, table.mu0_stderr / mu0, "C0", label=r"slipping: $\sigma(\mu_0)/\mu_0$")
+ax_se.loglog(mu0, table.delta_stderr / mu0, "C3--", label=r"rolling: $\sigma(\delta)/\delta$")
+ax_se.set(xlabel=r"$\mu_0$ or $\delta$", ylabel="relative standard error")
+ax_d.loglog(
+    mu0,
+    table.rms_distance / rig.camera.noise,
+    "k",
+    label="closest rolling path:\nrms distance / noise",
+)
+ax_d.set(xlabel=r"$\mu_0$", ylabel="rms distance / noise")
+ax_p = ax_d.twinx()
+ax_p.semilogx(mu0, table.selection_probability, "C2", label="P(AIC selects slipping)")
+ax_p.axhline(p.selection_probability, color="C2", ls=":", lw=0.8)
+ax_p.set(ylim=(0, 1.02), ylabel="P(AIC selects slipping)")
+ax_p.yaxis.label.set_color("C2")
+for ax in (ax_se, ax_d):
+    ax.axvspan(limit, mu0[-1], color="0.85", zorder=0, lw=0)
+    ax.axvline(limit, color="0.5", lw=0.8)
+ax_se.text(
+    limit * 1.4,
+    0.97,
+    f"cannot be told\napart: $\\mu_0 > {limit:.3g}$",
+    transform=ax_se.get_xaxis_transform(),
+    va="top",
+    fontsize=7,
+)
+ax_se.legend(fontsize=7, loc="lower right")
+ax_d.legend(fontsize=7, loc="lower left")
+ax_p.legend(fontsize=7, loc="center left")
+cam = rig.camera
+fig.suptitle(
+    f"{2 * rig.setup.radius * 1e3:g} mm ball at {rig.setup.omega:.3g} rad/s; "
+    f"{cam.fps:g} frames/s, {cam.noise * 1e3:g} mm noise, {cam.duration:g} s",
+    fontsize=8,
+)
+save(fig, snakemake)

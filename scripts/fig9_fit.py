@@ -1,0 +1,61 @@
+# %%
+"""Figure 9: synthetic films fitted with `turntable fit`.
+
+Caption: one row per synthetic film (configuration section synthetic_film): left, the
+tracked positions and the paths of both fitted models (read from the JSON the command
+wrote); middle, the residuals per coordinate against time (points: each frame; line: rms
+over a moving window), labelled with each fitted coefficient; right, the recovered
+coefficient of the true model minus the truth in units of its standard error (bars: two
+standard errors), and the AIC difference in favour of the selected model.
+"""
+
+# %%
+import json
+from pathlib import Path
+
+from _style import DOUBLE, save, setup, subplots
+from turntable import film, fitplot
+
+setup(snakemake)
+p = snakemake.params
+names = list(p.films)
+films = [film.read_film(path) for path in snakemake.input.csv]
+results = [json.loads(Path(path).read_text()) for path in snakemake.input.json]
+fig, axes = subplots(
+    len(names), 3, (DOUBLE, 2.5 * len(names) + 0.7), (0.6, 0.15, 0.45, 0.45), (0.7, 0.55)
+)
+
+# %%
+for row, name, data, res in zip(axes, names, films, results, strict=True):
+    truth = p.films[name]
+    fitplot.draw_paths(row[0], data, res)
+    fitplot.draw_residuals(row[1], data, res, coefficients=True)
+    row[1].legend(fontsize=5.5, loc="lower right")
+    symbol = {"mu0": r"$\mu_0$", "delta": r"$\delta$"}[fitplot.COEFFICIENT[truth["model"]]]
+    row[0].set_title(
+        f"synthetic film {name}: true {symbol} = {truth['coefficient']:g}; selected: "
+        f"{fitplot.STYLE[res['selected']][1].split()[0]}",
+        fontsize=7,
+        loc="left",
+    )
+handles, labels = axes[0, 0].get_legend_handles_labels()
+labels = [label.split(":")[0] for label in labels]
+fig.legend(handles, labels, loc="upper center", ncols=4, fontsize=7, frameon=False)
+
+# %%
+ax_z, ax_aic = axes[0, 2], axes[1, 2]
+for i, (name, res) in enumerate(zip(names, results, strict=True)):
+    truth = p.films[name]
+    coefficient = fitplot.COEFFICIENT[truth["model"]]
+    entry = res[truth["model"]]
+    z = (entry[coefficient] - truth["coefficient"]) / entry[f"{coefficient}_stderr"]
+    ax_z.errorbar(i, z, yerr=2.0, fmt="o", color=fitplot.STYLE[truth["model"]][0], capsize=3)
+    ax_aic.bar(i, res["selection"]["aic_difference"], color=fitplot.STYLE[res["selected"]][0])
+ax_z.axhline(0.0, color="k", lw=0.8)
+ax_z.set(ylim=(-4.5, 4.5), ylabel="(fitted - true) / standard error")
+ax_aic.set(yscale="log", ylim=(1.0, None), ylabel="AIC difference for the selected model")
+for ax in (ax_z, ax_aic):
+    ax.set(xticks=range(len(names)), xticklabels=names, xlim=(-0.7, len(names) - 0.3))
+for ax in axes[2:, 2]:
+    ax.axis("off")
+save(fig, snakemake)

@@ -1,0 +1,162 @@
+"""The ``turntable`` command.
+
+``turntable fit DATA.csv --radius R (--omega W | --rpm N) [--k K] [--axis X Y] [--mass M]
+[--plot FIG.png]`` fits the slipping and the rolling-resistance models to a tracked
+trajectory (`turntable.fit.fit_film`) and prints one JSON object on stdout
+(`turntable.fit.result_json`).
+
+Bad input (a file that cannot be read or parsed, see `turntable.film.read_film`; a
+negative, zero or non-finite number; too few frames) gets a one-line message on stderr
+and exit status 2, before any fitting is done.  ``python -m turntable`` runs the same.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import sys
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any, NoReturn
+
+from turntable import film as film_io
+from turntable import fit
+
+#: Exit status for bad input (as argparse uses for a bad command line).
+BAD_INPUT = 2
+
+_DESCRIPTION = """\
+Fit both friction models to a filmed ball and select one.
+
+DATA.csv: a header line naming at least the columns t, x, y (s and m; other columns are
+ignored; lines starting with # are comments), then one line per frame: the position of the
+ball's centre in the lab (non-rotating) frame.  The turntable turns counterclockwise in
+these coordinates (from x towards y); for a clockwise turntable, or image coordinates
+with y pointing down, negate y.  Prints one JSON object on stdout: the fitted
+coefficients mu0 = mu0_dim / (m Omega) (slipping with viscous friction) and
+delta = delta_dim / (m R^2 Omega) (rolling without slipping against a resistance torque),
+dimensionless, with standard errors, rms residuals, AIC, the initial states, and the
+selected model with the evidence (AIC difference, Akaike weights)."""
+
+
+class _Parser(argparse.ArgumentParser):
+    """An ArgumentParser whose errors are one line on stderr and exit status 2."""
+
+    def error(self, message: str) -> NoReturn:
+        _fail(f"{self.prog}: error: {message}")
+
+
+def _fail(message: str) -> NoReturn:
+    print(" ".join(message.split()) if "\n" in message else message, file=sys.stderr)
+    raise SystemExit(BAD_INPUT)
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = _Parser(prog="turntable", description="The ball on a turntable.")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    p = sub.add_parser(
+        "fit",
+        help="fit the friction models to a tracked trajectory",
+        description=_DESCRIPTION,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    p.add_argument("data", metavar="DATA.csv", help="tracked positions (t, x, y) in s and m")
+    p.add_argument("--radius", type=float, required=True, metavar="R", help="ball radius, m")
+    rate = p.add_mutually_exclusive_group(required=True)
+    rate.add_argument("--omega", type=float, metavar="W", help="turntable rate, rad/s")
+    rate.add_argument("--rpm", type=float, metavar="N", help="turntable rate, revolutions/min")
+    p.add_argument(
+        "--k", type=float, default=0.4, help="inertia ratio I/(m R^2) (default 0.4, solid ball)"
+    )
+    p.add_argument(
+        "--axis",
+        type=float,
+        nargs=2,
+        default=(0.0, 0.0),
+        metavar=("X", "Y"),
+        help="position of the turntable's axis in the data's coordinates, m (default 0 0)",
+    )
+    p.add_argument(
+        "--mass", type=float, metavar="M", help="ball mass, kg: adds dimensional coefficients"
+    )
+    p.add_argument(
+        "--plot", metavar="FIG.png", help="draw data, both fits and the residuals (matplotlib)"
+    )
+    return parser
+
+
+def _positive(option: str, value: float | None, unit: str) -> None:
+    if value is not None and not (math.isfinite(value) and value > 0):
+        _fail(f"turntable fit: error: {option} must be a finite number > 0 ({unit}); got {value}")
+
+
+def _finite_json(value: Any) -> Any:
+    """``value`` with every non-finite float replaced by None (JSON has no inf or NaN)."""
+    if isinstance(value, float):
+        return value if math.isfinite(value) else None
+    if isinstance(value, dict):
+        return {k: _finite_json(v) for k, v in value.items()}
+    if isinstance(value, list | tuple):
+        return [_finite_json(v) for v in value]
+    return value
+
+
+def fit_command(args: argparse.Namespace) -> int:
+    """Run ``turntable fit``: check everything, fit, print the JSON, draw the plot."""
+    _positive("--radius", args.radius, "m")
+    _positive("--omega", args.omega, "rad/s")
+    _positive("--rpm", args.rpm, "revolutions per minute")
+    _positive("--k", args.k, "dimensionless")
+    _positive("--mass", args.mass, "kg")
+    if not all(math.isfinite(a) for a in args.axis):
+        _fail(f"turntable fit: error: --axis must be two finite numbers (m); got {args.axis}")
+    if args.plot is not None:
+        try:
+            from matplotlib.backend_bases import FigureCanvasBase
+        except ImportError:
+            _fail(
+                "turntable fit: error: --plot needs matplotlib, which cannot be imported "
+                "(pip install matplotlib)"
+            )
+
+        formats = FigureCanvasBase.get_supported_filetypes()
+        suffix = Path(args.plot).suffix.lstrip(".").lower()
+        if suffix not in formats:
+            _fail(
+                f"turntable fit: error: --plot {args.plot}: unknown format {suffix!r} "
+                f"(use one of {', '.join(sorted(formats))})"
+            )
+        folder = Path(args.plot).resolve().parent
+        if not folder.is_dir() or not os.access(folder, os.W_OK):
+            _fail(f"turntable fit: error: --plot: cannot write into the folder {folder}")
+    omega = args.omega if args.omega is not None else film_io.rpm_to_omega(args.rpm)
+    setup = film_io.Setup(args.radius, omega, args.k, (args.axis[0], args.axis[1]))
+    p = max(fit.n_parameters(m) for m in fit.MODELS)
+    why = f"2 coordinates each, more than the {p} parameters of the slipping model"
+    try:
+        data = film_io.read_film(args.data, min_rows=p // 2 + 1, why=why)
+    except film_io.FilmError as exc:
+        _fail(f"turntable fit: error: {exc}")
+    result = fit.fit_film(data, setup)
+    out = _finite_json(fit.result_json(result, setup, data, args.mass, source=args.data))
+    if args.plot is not None:
+        from turntable import fitplot
+
+        fitplot.plot_fit(args.plot, data, out)
+    json.dump(out, sys.stdout, indent=2, allow_nan=False)
+    sys.stdout.write("\n")
+    return 0
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Entry point of the ``turntable`` console script; returns the exit status."""
+    args = _parser().parse_args(sys.argv[1:] if argv is None else list(argv))
+    if args.command == "fit":
+        return fit_command(args)
+    raise AssertionError(args.command)  # argparse allows only the commands above
+
+
+if __name__ == "__main__":
+    sys.exit(main())

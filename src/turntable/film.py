@@ -1,0 +1,424 @@
+"""A filmed trajectory: the CSV file of tracked positions, and synthetic films.
+
+A film is the position (x, y) of the ball's centre in the lab (non-rotating) frame at the
+times t of the frames, in metres and seconds.  The file is text, comma-separated, UTF-8:
+
+- lines whose first non-blank character is ``#`` are comments, blank lines are skipped;
+- the first other line is the header; it names at least the columns ``t``, ``x`` and
+  ``y`` (in any order; other columns are ignored);
+- every further line is one frame, with as many fields as the header; t, x and y are
+  finite numbers and t increases strictly from frame to frame.
+
+`read_film` refuses anything else with a `FilmError` whose message names the file, the
+line and the column.  `simulate_film` makes a synthetic film from the exact solutions
+(`turntable.solve`, `turntable.rolling.solve`) plus Gaussian tracking noise, and
+`write_film` writes it with a header that marks it SYNTHETIC and gives the true
+parameters.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import tempfile
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import Any, NamedTuple
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from turntable import _validate
+
+#: The columns a film must have: time (s) and the centre's position (m).
+COLUMNS = ("t", "x", "y")
+
+
+class FilmError(ValueError):
+    """A film file that cannot be used; the message names file, line and column."""
+
+
+class Film(NamedTuple):
+    """Tracked positions of the ball's centre in the lab frame (SI units).
+
+    Attributes
+    ----------
+    t : numpy.ndarray
+        Times of the frames in s, strictly increasing, shape (n,).
+    x, y : numpy.ndarray
+        Position of the centre in m, shape (n,).
+    """
+
+    t: NDArray[np.float64]
+    x: NDArray[np.float64]
+    y: NDArray[np.float64]
+
+
+class Setup(NamedTuple):
+    """The ball and the turntable.
+
+    Attributes
+    ----------
+    radius : float
+        Radius R of the ball, m.
+    omega : float
+        Angular velocity Omega of the turntable, rad/s, counterclockwise in the (x, y)
+        coordinates of the film (from the x axis towards the y axis).
+    k : float
+        Inertia ratio I / (m R^2) of the ball (2/5 for a homogeneous ball).
+    axis : tuple of float
+        Position (x, y) of the turntable's axis in the film's coordinates, m.
+    """
+
+    radius: float
+    omega: float
+    k: float = 0.4
+    axis: tuple[float, float] = (0.0, 0.0)
+
+
+class Camera(NamedTuple):
+    """How the ball is filmed.
+
+    Attributes
+    ----------
+    fps : float
+        Frame rate, 1/s.
+    noise : float
+        Standard deviation of the tracking error of each coordinate of each frame, m.
+    duration : float
+        Length of the film, s; the frames are at t = i / fps, 0 <= t <= duration.
+    """
+
+    fps: float
+    noise: float
+    duration: float
+
+
+def rpm_to_omega(rpm: float) -> float:
+    """Return the angular velocity in rad/s of ``rpm`` revolutions per minute (2 pi rpm / 60)."""
+    return 2.0 * math.pi * _validate.positive_scalar("rpm", rpm) / 60.0
+
+
+def check_setup(setup: Setup) -> Setup:
+    """Return ``setup`` with its numbers validated (ValueError naming a bad one)."""
+    radius = _validate.positive_scalar("radius", setup.radius)
+    omega = _validate.positive_scalar("omega", setup.omega)
+    k = _validate.positive_scalar("k", setup.k)
+    axis = tuple(_validate.finite_scalar("axis", a) for a in setup.axis)
+    if len(axis) != 2:
+        raise ValueError(f"axis must be two finite numbers (x, y); got {setup.axis!r}")
+    return Setup(radius, omega, k, (axis[0], axis[1]))
+
+
+def frame_times(camera: Camera) -> NDArray[np.float64]:
+    """Return the times i / fps of the frames in [0, duration], s."""
+    fps = _validate.positive_scalar("fps", camera.fps)
+    duration = _validate.positive_scalar("duration", camera.duration)
+    return np.arange(math.floor(duration * fps * (1.0 + 1e-12)) + 1) / fps
+
+
+def state_from_si(
+    position: ArrayLike,
+    velocity: ArrayLike,
+    spin: ArrayLike,
+    setup: Setup,
+) -> NDArray[np.float64]:
+    """Return the dimensionless state (x, y, vx, vy, wx, wy) of a ball given in SI units.
+
+    Parameters
+    ----------
+    position : array_like
+        Position (x, y) of the centre in the film's coordinates, m.
+    velocity : array_like
+        Velocity of the centre in the lab frame, m/s.
+    spin : array_like
+        Horizontal components of the ball's angular velocity in the lab frame, rad/s.
+    setup : Setup
+        Ball and turntable.
+
+    Returns
+    -------
+    numpy.ndarray
+        (r - axis) / R, v / (R Omega), w / Omega.
+
+    Notes
+    -----
+    The paper's units (Section 1): length R, time 1/Omega; the spin w is in units of
+    Omega, so that the slip velocity is u = v + gamma x w - gamma x r (the no-slip
+    constraint of a ball on a plane turning at rate 1).
+    """
+    setup = check_setup(setup)
+    out = np.empty(6)
+    for i, (name, value) in enumerate((("position", position), ("velocity", velocity))):
+        arr = _validate._as_float_array(name, value, "two finite numbers")
+        if arr.shape != (2,) or not np.all(np.isfinite(arr)):
+            raise ValueError(f"{name} must be two finite numbers; got {value!r}")
+        out[2 * i : 2 * i + 2] = arr
+    arr = _validate._as_float_array("spin", spin, "two finite numbers")
+    if arr.shape != (2,) or not np.all(np.isfinite(arr)):
+        raise ValueError(f"spin must be two finite numbers; got {spin!r}")
+    out[0:2] = (out[0:2] - np.asarray(setup.axis)) / setup.radius
+    out[2:4] /= setup.radius * setup.omega
+    out[4:6] = arr / setup.omega
+    return out
+
+
+def state_to_si(state: ArrayLike, setup: Setup) -> dict[str, list[float]]:
+    """Return the dimensionless state as position (m), velocity (m/s), spin (rad/s).
+
+    The inverse of `state_from_si`.
+    """
+    setup = check_setup(setup)
+    z = _validate.state("state", state)
+    return {
+        "position_m": [float(v) for v in z[0:2] * setup.radius + np.asarray(setup.axis)],
+        "velocity_m_s": [float(v) for v in z[2:4] * setup.radius * setup.omega],
+        "spin_rad_s": [float(v) for v in z[4:6] * setup.omega],
+    }
+
+
+class Rig(NamedTuple):
+    """A filmed experiment: ball and turntable, camera, the ball's start, its mass (kg)."""
+
+    setup: Setup
+    camera: Camera
+    state0: NDArray[np.float64]
+    mass: float
+
+
+def rig_from_config(section: Mapping[str, Any]) -> Rig:
+    """Return the `Rig` of the workflow's configuration section ``film`` (SI units).
+
+    Parameters
+    ----------
+    section : mapping
+        Keys radius_m, mass_kg, k, rpm, axis_m, fps, noise_m, duration_s,
+        start_position_m, start_velocity_m_s, start_spin_rad_s (see
+        workflow/schemas/config.schema.yaml).
+
+    Returns
+    -------
+    Rig
+        ``state0`` is the dimensionless start (`state_from_si`) of the slipping ball.
+    """
+    axis = section["axis_m"]
+    setup = check_setup(
+        Setup(section["radius_m"], rpm_to_omega(section["rpm"]), section["k"], (axis[0], axis[1]))
+    )
+    camera = Camera(section["fps"], section["noise_m"], section["duration_s"])
+    state0 = state_from_si(
+        section["start_position_m"],
+        section["start_velocity_m_s"],
+        section["start_spin_rad_s"],
+        setup,
+    )
+    return Rig(setup, camera, state0, _validate.positive_scalar("mass", section["mass_kg"]))
+
+
+# --------------------------------------------------------------------------- reading
+def _number(text: str, path: str, line: int, field: int, name: str) -> float:
+    where = f"{path}:{line}: column '{name}' (field {field})"
+    try:
+        value = float(text)
+    except ValueError:
+        raise FilmError(f"{where}: {text.strip()!r} is not a number") from None
+    if not math.isfinite(value):
+        raise FilmError(f"{where}: {text.strip()!r} is not a finite number")
+    return value
+
+
+def read_film(path: str | os.PathLike[str], min_rows: int = 1, why: str = "") -> Film:
+    """Read a film (t, x, y) from a CSV file; see the module docstring for the format.
+
+    Parameters
+    ----------
+    path : str or path-like
+        The CSV file.
+    min_rows : int
+        Fewest frames accepted.
+    why : str
+        Reason for ``min_rows``, added to the message if there are fewer frames.
+
+    Returns
+    -------
+    Film
+
+    Raises
+    ------
+    FilmError
+        For a file that cannot be read or is not UTF-8 text, a header without one of the
+        columns t, x, y (or with one of them twice), a row with another number of fields
+        than the header, a value that is not a finite number, a time that does not
+        increase, or fewer than ``min_rows`` frames.  The message starts with
+        ``<file>:<line>:`` and names the column and its field number where there is one.
+    """
+    name = os.fspath(path)
+    try:
+        raw = Path(path).read_bytes()
+    except OSError as exc:
+        raise FilmError(f"{name}: cannot read the file: {exc.strerror or exc}") from None
+    header: dict[str, int] | None = None
+    n_fields = 0
+    header_line = 0
+    columns: dict[str, list[float]] = {c: [] for c in COLUMNS}
+    first = last = 0
+    prev_t = -math.inf
+    prev_line = 0
+    for number, chunk in enumerate(raw.split(b"\n"), start=1):
+        try:
+            text = chunk.decode("utf-8")
+        except UnicodeDecodeError:
+            raise FilmError(f"{name}:{number}: not UTF-8 text") from None
+        text = text.lstrip("\ufeff").rstrip("\r")
+        if not text.strip() or text.lstrip().startswith("#"):
+            continue
+        fields = [f.strip() for f in text.split(",")]
+        if header is None:
+            header, header_line, n_fields = {}, number, len(fields)
+            for i, field in enumerate(fields, start=1):
+                if field in COLUMNS and field in header:
+                    raise FilmError(
+                        f"{name}:{number}: column '{field}' appears twice in the header "
+                        f"(fields {header[field]} and {i})"
+                    )
+                header.setdefault(field, i)
+            missing = [c for c in COLUMNS if c not in header]
+            if missing:
+                raise FilmError(
+                    f"{name}:{number}: the header has no column '{missing[0]}' (it names "
+                    f"{', '.join(repr(f) for f in fields)}; columns t, x, y are needed)"
+                )
+            continue
+        if len(fields) != n_fields:
+            raise FilmError(
+                f"{name}:{number}: {len(fields)} fields, but the header on line "
+                f"{header_line} has {n_fields}"
+            )
+        values = {c: _number(fields[header[c] - 1], name, number, header[c], c) for c in COLUMNS}
+        if values["t"] <= prev_t:
+            raise FilmError(
+                f"{name}:{number}: column 't' (field {header['t']}): t = {values['t']:g} does "
+                f"not increase (t = {prev_t:g} on line {prev_line}); the times must increase "
+                "strictly"
+            )
+        prev_t, prev_line = values["t"], number
+        for c in COLUMNS:
+            columns[c].append(values[c])
+        first = first or number
+        last = number
+    if header is None:
+        raise FilmError(f"{name}:1: no header line (a line naming the columns t, x, y)")
+    n = len(columns["t"])
+    if n < min_rows:
+        rows = f"lines {first}-{last}" if n else f"none after the header on line {header_line}"
+        reason = f" ({why})" if why else ""
+        raise FilmError(
+            f"{name}:{last or header_line}: {n} frames ({rows}); need at least {min_rows}{reason}"
+        )
+    return Film(*(np.array(columns[c]) for c in COLUMNS))
+
+
+# --------------------------------------------------------------------------- synthetic films
+def simulate_film(
+    model: str,
+    coefficient: float,
+    state0: ArrayLike,
+    setup: Setup,
+    camera: Camera,
+    seed: int,
+) -> Film:
+    """Return a synthetic film: the exact motion of one model plus Gaussian tracking noise.
+
+    Parameters
+    ----------
+    model : {"slipping", "rolling_resistance"}
+        The slipping ball of the paper (`turntable.solve`, coefficient mu0) or the ball
+        rolling without slipping with rolling resistance (`turntable.rolling.solve`,
+        coefficient delta).
+    coefficient : float
+        mu0 / (m Omega) or delta / (m R^2 Omega), dimensionless, > 0.
+    state0 : array_like
+        Dimensionless state (x, y, vx, vy, wx, wy) at t = 0 (see `state_from_si`); for
+        the rolling model it must satisfy the no-slip constraint.
+    setup : Setup
+        Ball and turntable.
+    camera : Camera
+        Frame rate, noise and duration.
+    seed : int
+        Seed of the noise (`numpy.random.default_rng`).
+
+    Returns
+    -------
+    Film
+        Frames at t = i / fps; x, y = R (x, y)(Omega t) + axis + noise, each coordinate
+        with independent N(0, noise^2) errors.
+    """
+    from turntable.fit import positions
+
+    t = frame_times(camera)
+    noise = float(camera.noise)
+    if not (math.isfinite(noise) and noise >= 0):
+        raise ValueError(f"noise must be a finite number >= 0; got {camera.noise!r}")
+    xy = positions(model, coefficient, state0, t, setup)
+    rng = np.random.default_rng(seed)
+    xy = xy + noise * rng.standard_normal(xy.shape)
+    return Film(t, xy[:, 0], xy[:, 1])
+
+
+def write_film(
+    path: str | os.PathLike[str], film: Film, comments: Sequence[str] = (), digits: int = 10
+) -> None:
+    """Write ``film`` as CSV (header ``t,x,y``), atomically, after ``# `` comment lines.
+
+    Parameters
+    ----------
+    path : str or path-like
+        The file; written under a temporary name in the same folder, then renamed.
+    film : Film
+        The frames.
+    comments : sequence of str
+        Lines written first, each prefixed with ``# ``.
+    digits : int
+        Significant digits of each number.
+    """
+    path = Path(path)
+    lines = [f"# {c}" for c in comments] + ["t,x,y"]
+    lines += [
+        f"{t:.{digits}g},{x:.{digits}g},{y:.{digits}g}"
+        for t, x, y in zip(film.t, film.x, film.y, strict=True)
+    ]
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    try:
+        with os.fdopen(fd, "w") as fh:
+            fh.write("\n".join(lines) + "\n")
+        os.chmod(tmp, 0o644)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+
+
+def synthetic_header(
+    model: str,
+    coefficient: float,
+    state0: ArrayLike,
+    setup: Setup,
+    camera: Camera,
+    seed: int,
+) -> list[str]:
+    """Return the comment lines that mark a film SYNTHETIC and give its true parameters."""
+    from turntable.fit import COEFFICIENT
+
+    z0 = _validate.state("state0", state0)
+    si = state_to_si(z0, setup)
+    return [
+        "SYNTHETIC DATA: simulated by turntable.film.simulate_film, not measured.",
+        f"truth: model = {model}, {COEFFICIENT[model]} = {coefficient!r} (dimensionless)",
+        f"truth: k = {setup.k!r}, radius_m = {setup.radius!r}, omega_rad_s = {setup.omega!r}, "
+        f"axis_m = {list(setup.axis)!r}",
+        f"truth: state0 = {[float(v) for v in z0]!r} (dimensionless, at t = 0); "
+        f"position_m = {si['position_m']!r}, velocity_m_s = {si['velocity_m_s']!r}, "
+        f"spin_rad_s = {si['spin_rad_s']!r}",
+        f"camera: fps = {camera.fps!r}, noise_m = {camera.noise!r} (per coordinate), "
+        f"duration_s = {camera.duration!r}, seed = {seed}",
+    ]

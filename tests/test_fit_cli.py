@@ -1,0 +1,356 @@
+"""The ``turntable fit`` command (`turntable.cli`): output on files it has never seen, and
+every kind of bad input (one line on stderr naming file, line and column, exit status 2).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import subprocess
+import sys
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import turntable as tt
+from test_pipeline import clean_build, shared_tmp  # noqa: F401
+from turntable import cli, film, fit
+
+ROOT = Path(__file__).resolve().parents[1]
+COMMAND = str(Path(sys.executable).with_name("turntable"))
+#: Prelude of a child interpreter in which matplotlib cannot be imported.
+BLOCK = """
+import sys
+class Block:
+    def find_spec(self, name, path=None, target=None):
+        if name.split('.')[0] == 'matplotlib':
+            raise ImportError('blocked ' + name)
+sys.meta_path.insert(0, Block())
+"""
+
+
+def run(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess:
+    """``turntable fit ARGS`` as a separate process (the installed console script)."""
+    return subprocess.run(
+        [COMMAND, "fit", *args], capture_output=True, text=True, timeout=120, cwd=cwd, check=False
+    )
+
+
+def run_here(capsys: pytest.CaptureFixture[str], *args: str) -> subprocess.CompletedProcess:
+    """``turntable fit ARGS`` in this process (`turntable.cli.main`), same result as `run`."""
+    try:
+        code = cli.main(["fit", *args])
+    except SystemExit as exc:
+        code = exc.code
+    out, err = capsys.readouterr()
+    return subprocess.CompletedProcess(args, code, out, err)
+
+
+def test_console_script_is_declared() -> None:
+    pyproject = tomllib.loads((ROOT / "pyproject.toml").read_text())
+    assert pyproject["project"]["scripts"] == {"turntable": "turntable.cli:main"}
+    assert Path(COMMAND).is_file()
+
+
+# --------------------------------------------------------------------------- an unseen film
+def _unseen_film(tmp_path: Path, model: str, entropy: int) -> tuple[Path, dict]:
+    """A film from random parameters, written with comments, extra columns in another
+    order, a clock that does not start at 0, and an axis away from the origin."""
+    rng = np.random.default_rng(entropy)
+    setup = film.Setup(
+        radius=float(rng.uniform(3e-3, 1e-2)),
+        omega=film.rpm_to_omega(float(rng.choice([100.0 / 3.0, 45.0, 78.0]))),
+        k=float(rng.uniform(0.3, 0.7)),
+        axis=(float(rng.uniform(-0.2, 0.2)), float(rng.uniform(-0.2, 0.2))),
+    )
+    c = float(np.exp(rng.uniform(*np.log([0.05, 5.0] if model == "slipping" else [0.003, 0.3]))))
+    angle = rng.uniform(0, 2 * np.pi)
+    position = np.asarray(setup.axis) + rng.uniform(0.03, 0.08) * np.array(
+        [np.cos(angle), np.sin(angle)]
+    )
+    z0 = film.state_from_si(position, rng.uniform(-0.02, 0.02, 2), [0.0, 0.0], setup)
+    if model == "rolling_resistance":
+        z0 = tt.no_slip_state(z0, setup.k)
+    camera = film.Camera(fps=float(rng.choice([60.0, 120.0])), noise=3e-4, duration=8.0)
+    data = film.simulate_film(model, c, z0, setup, camera, seed=int(rng.integers(2**31)))
+    t0 = float(rng.uniform(0.0, 100.0))
+    lines = ["# tracked positions", "frame,y,quality,t,x"]
+    lines += [
+        f"{i},{y:.12g},0.9,{t + t0:.12g},{x:.12g}"
+        for i, (t, x, y) in enumerate(zip(data.t, data.x, data.y, strict=True))
+    ]
+    path = tmp_path / "unseen film.csv"
+    path.write_text("\n".join(lines) + "\n")
+    mass = float(rng.uniform(1e-3, 5e-2))
+    truth = {"setup": setup, "c": c, "z0": z0, "noise": camera.noise, "t0": t0, "mass": mass}
+    return path, truth
+
+
+@pytest.mark.parametrize("model", fit.MODELS)
+def test_fit_of_a_film_never_seen(tmp_path: Path, model: str) -> None:
+    """Random parameters each run (the seed is in the failure message)."""
+    entropy = int(np.random.SeedSequence().entropy)
+    path, truth = _unseen_film(tmp_path, model, entropy)
+    setup = truth["setup"]
+    proc = run(
+        path.name,
+        "--radius",
+        repr(setup.radius),
+        "--omega",
+        repr(setup.omega),
+        "--k",
+        repr(setup.k),
+        "--axis",
+        repr(setup.axis[0]),
+        repr(setup.axis[1]),
+        "--mass",
+        repr(truth["mass"]),
+        cwd=tmp_path,
+    )
+    why = f"seed {entropy}: {proc.stderr}"
+    assert proc.returncode == 0, why
+    assert proc.stderr == "", why
+    out = json.loads(proc.stdout)
+    assert out["selected"] == model, why
+    name = fit.COEFFICIENT[model]
+    entry = out[model]
+    assert abs(entry[name] - truth["c"]) < 5 * entry[f"{name}_stderr"], why
+    assert entry["rms_residual_m"] == pytest.approx(truth["noise"], rel=0.15), why
+    for key in ("mu0", "mu0_stderr", "rms_residual_m", "aic", "state0"):
+        assert key in out["slipping"]
+    for key in ("delta", "delta_stderr", "rms_residual_m", "aic", "state0"):
+        assert key in out["rolling_resistance"]
+    assert len(entry["state0"]) == 6
+    # the initial state's position is the first frame's, relative to the axis, in R
+    assert np.hypot(*(np.array(entry["state0"][:2]) - truth["z0"][:2])) < 0.2, why
+    assert out["data"]["t0_s"] == pytest.approx(truth["t0"])
+    assert out["data"]["file"] == path.name
+    factor = truth["mass"] * setup.omega * (1.0 if model == "slipping" else setup.radius**2)
+    unit = "kg_per_s" if model == "slipping" else "kg_m2_per_s"
+    assert entry[f"{name}_dim_{unit}"] == pytest.approx(entry[name] * factor)
+    weights = out["selection"]["akaike_weights"]
+    assert weights[model] > 0.5
+    assert sum(weights.values()) == pytest.approx(1.0)
+    other = next(m for m in fit.MODELS if m != model)
+    assert out["selection"]["aic_difference"] == pytest.approx(
+        out[other]["aic"] - out[model]["aic"]
+    )
+
+
+def test_rpm_and_omega_agree_and_python_m_runs_the_same(tmp_path: Path) -> None:
+    path, truth = _unseen_film(tmp_path, "slipping", 5)
+    common = ["--radius", repr(truth["setup"].radius), "--axis"]
+    common += [repr(a) for a in truth["setup"].axis]
+    a = run(str(path), *common, "--omega", repr(film.rpm_to_omega(45.0)))
+    b = subprocess.run(
+        [sys.executable, "-m", "turntable", "fit", str(path), *common, "--rpm", "45"],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=False,
+    )
+    assert a.returncode == b.returncode == 0, a.stderr + b.stderr
+    ja, jb = json.loads(a.stdout), json.loads(b.stdout)
+    assert ja["setup"]["omega_rad_s"] == pytest.approx(jb["setup"]["omega_rad_s"])
+    assert ja["slipping"]["mu0"] == pytest.approx(jb["slipping"]["mu0"], rel=1e-9)
+
+
+def test_plot(tmp_path: Path) -> None:
+    path, truth = _unseen_film(tmp_path, "rolling_resistance", 6)
+    figure = tmp_path / "fit.png"
+    proc = run(
+        str(path),
+        "--radius",
+        repr(truth["setup"].radius),
+        "--omega",
+        repr(truth["setup"].omega),
+        "--axis",
+        *[repr(a) for a in truth["setup"].axis],
+        "--plot",
+        str(figure),
+    )
+    assert proc.returncode == 0, proc.stderr
+    assert json.loads(proc.stdout)["selected"] == "rolling_resistance"
+    assert figure.read_bytes().startswith(b"\x89PNG\r\n\x1a\n")
+    assert [p.name for p in tmp_path.iterdir() if p.name.startswith(".")] == []
+
+
+def _blocked(args: list[str]) -> subprocess.CompletedProcess:
+    code = BLOCK + f"from turntable.cli import main\nsys.exit(main({args!r}))\n"
+    return subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, timeout=120, check=False
+    )
+
+
+def test_matplotlib_is_needed_only_for_plot(tmp_path: Path) -> None:
+    path, truth = _unseen_film(tmp_path, "slipping", 7)
+    args = ["fit", str(path), "--radius", repr(truth["setup"].radius), "--rpm", "45"]
+    without = _blocked(args)
+    assert without.returncode == 0, without.stderr
+    assert json.loads(without.stdout)["selected"] in fit.MODELS
+    figure = tmp_path / "fit.png"
+    proc = _blocked([*args, "--plot", str(figure)])
+    assert proc.returncode == 2
+    assert proc.stdout == ""
+    assert proc.stderr.count("\n") == 1
+    assert "--plot needs matplotlib" in proc.stderr
+    assert not figure.exists()
+
+
+# --------------------------------------------------------------------------- bad input
+GOOD = "t,x,y\n0.0,0.05,0.0\n0.1,0.049,0.005\n0.2,0.047,0.01\n0.3,0.044,0.015\n0.4,0.04,0.02\n"
+
+BAD_FILES = {
+    "missing column": ("t,x,z\n0,1,2\n", [":1:", "column 'y'"]),
+    "non-numeric value": (
+        "# comment\nt,x,y\n0,0.05,0\n0.1,abc,0.01\n",
+        [":4:", "column 'x'", "field 2", "'abc'"],
+    ),
+    "empty value": ("t,x,y\n0,0.05,0\n0.1,0.05,\n", [":3:", "column 'y'", "field 3"]),
+    "nan": ("t,x,y\n0,0.05,0\n0.1,nan,0\n", [":3:", "column 'x'", "not a finite number"]),
+    "infinity": ("t,x,y\n0,0.05,0\n0.1,0.05,-inf\n", [":3:", "column 'y'", "not a finite"]),
+    "time goes back": (
+        "t,x,y\n0,0.05,0\n0.2,0.05,0\n0.1,0.05,0\n",
+        [":4:", "column 't'", "does not increase"],
+    ),
+    "time repeated": ("t,x,y\n0,0.05,0\n0,0.05,0\n", [":3:", "column 't'", "does not increase"]),
+    "fewer points than parameters": (
+        "t,x,y\n0,0.05,0\n0.1,0.05,0\n0.2,0.05,0\n",
+        [":4:", "3 frames", "at least 4", "7 parameters"],
+    ),
+    "no frames": ("# nothing\nt,x,y\n", [":2:", "0 frames"]),
+    "short row": ("t,x,y\n0,0.05,0\n0.1,0.05\n", [":3:", "2 fields", "header on line 1 has 3"]),
+    "column twice": ("t,x,y,x\n", [":1:", "column 'x' appears twice"]),
+    "empty file": ("", [":1:", "no header"]),
+    "not text": (b"t,x,y\n0,\xff\xfe,0\n", [":2:", "not UTF-8"]),
+}
+
+
+def _check_bad(proc: subprocess.CompletedProcess, expected: list[str]) -> None:
+    assert proc.returncode == 2, proc.stderr
+    assert proc.stdout == ""
+    assert proc.stderr.endswith("\n")
+    assert proc.stderr.count("\n") == 1, proc.stderr  # one line, no traceback
+    assert "Traceback" not in proc.stderr
+    for text in expected:
+        assert text in proc.stderr, (text, proc.stderr)
+
+
+@pytest.mark.parametrize("case", list(BAD_FILES))
+def test_bad_file(tmp_path: Path, capsys: pytest.CaptureFixture[str], case: str) -> None:
+    content, expected = BAD_FILES[case]
+    path = tmp_path / "film.csv"
+    if isinstance(content, bytes):
+        path.write_bytes(content)
+    else:
+        path.write_text(content)
+    proc = run_here(capsys, str(path), "--radius", "0.005", "--rpm", "33.3")
+    _check_bad(proc, [f"{path}:", *expected])
+
+
+@pytest.mark.parametrize("kind", ["missing", "directory"])
+def test_unreadable_file(tmp_path: Path, capsys: pytest.CaptureFixture[str], kind: str) -> None:
+    path = tmp_path / ("nowhere.csv" if kind == "missing" else "folder")
+    if kind == "directory":
+        path.mkdir()
+    proc = run_here(capsys, str(path), "--radius", "0.005", "--rpm", "33.3")
+    _check_bad(proc, [str(path), "cannot read the file"])
+
+
+@pytest.mark.parametrize(
+    ("case", "options"),
+    [("non-numeric value", ["--rpm", "33.3"]), ("fewer points than parameters", ["--rpm", "-1"])],
+)
+def test_bad_input_end_to_end(tmp_path: Path, case: str, options: list[str]) -> None:
+    """The console script itself: one line, status 2, no traceback (a bad option is
+    reported before the file is read)."""
+    content, expected = BAD_FILES[case]
+    path = tmp_path / "film.csv"
+    path.write_text(content)
+    proc = run(str(path), "--radius", "0.005", *options)
+    expected = ["--rpm", "> 0"] if options[-1] == "-1" else [f"{path}:", *expected]
+    _check_bad(proc, expected)
+
+
+BAD_OPTIONS = {
+    "negative radius": (["--radius", "-0.005", "--rpm", "33"], ["--radius", "> 0", "-0.005"]),
+    "zero radius": (["--radius", "0", "--rpm", "33"], ["--radius", "> 0"]),
+    "negative omega": (["--radius", "0.005", "--omega", "-3.5"], ["--omega", "> 0", "-3.5"]),
+    "infinite omega": (["--radius", "0.005", "--omega", "inf"], ["--omega", "finite"]),
+    "negative rpm": (["--radius", "0.005", "--rpm", "-33"], ["--rpm", "> 0"]),
+    "nan k": (["--radius", "0.005", "--rpm", "33", "--k", "nan"], ["--k", "finite"]),
+    "negative mass": (["--radius", "0.005", "--rpm", "33", "--mass", "-1"], ["--mass", "> 0"]),
+    "infinite axis": (["--radius", "0.005", "--rpm", "33", "--axis", "0", "inf"], ["--axis"]),
+    "not a number": (["--radius", "five", "--rpm", "33"], ["--radius", "'five'"]),
+    "no rate": (["--radius", "0.005"], ["--omega", "--rpm", "required"]),
+    "two rates": (["--radius", "0.005", "--rpm", "33", "--omega", "3"], ["not allowed"]),
+    "plot format": (["--radius", "0.005", "--rpm", "33", "--plot", "fit.xyz"], ["'xyz'"]),
+    "plot folder": (
+        ["--radius", "0.005", "--rpm", "33", "--plot", "/nonexistent/fit.png"],
+        ["--plot", "/nonexistent"],
+    ),
+}
+
+
+@pytest.mark.parametrize("case", list(BAD_OPTIONS))
+def test_bad_option(tmp_path: Path, capsys: pytest.CaptureFixture[str], case: str) -> None:
+    args, expected = BAD_OPTIONS[case]
+    path = tmp_path / "film.csv"
+    path.write_text(GOOD)
+    proc = run_here(capsys, str(path), *args)
+    _check_bad(proc, expected)
+
+
+def test_good_file_passes_the_checks(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """The file the bad cases are variations of is accepted (five frames)."""
+    path = tmp_path / "film.csv"
+    path.write_text(GOOD)
+    proc = run_here(capsys, str(path), "--radius", "0.005", "--rpm", "33.3")
+    assert proc.returncode == 0, proc.stderr
+    out = json.loads(proc.stdout)
+    assert out["data"]["n_frames"] == 5
+    assert math.isfinite(out["slipping"]["aic"])
+
+
+# --------------------------------------------------------------------------- in the workflow
+def test_workflow_fits_the_synthetic_film_with_the_command(
+    clean_build: Path,  # noqa: F811
+) -> None:
+    """Rule synthetic_film writes a film marked SYNTHETIC with its truth (config sections
+    film and synthetic_film); rule fit_film runs `turntable fit` on it: the JSON selects the
+    true model and recovers the coefficient within 4 standard errors."""
+    import yaml
+
+    workflow_build = clean_build
+    config = yaml.safe_load((workflow_build / "config" / "config.yaml").read_text())
+    (truth,) = [f for f in config["synthetic_film"]["films"] if f["name"] == "slipping"]
+    text = (workflow_build / "results/film/slipping.csv").read_text()
+    assert text.startswith("# SYNTHETIC DATA")
+    assert f"mu0 = {truth['coefficient']!r}" in text
+    rig = film.rig_from_config(config["film"])
+    data = film.read_film(workflow_build / "results/film/slipping.csv")
+    assert data.t.size == round(rig.camera.duration * rig.camera.fps) + 1
+    out = json.loads((workflow_build / "results/film/slipping.json").read_text())
+    assert out["selected"] == truth["model"]
+    assert abs(out["slipping"]["mu0"] - truth["coefficient"]) < 4 * out["slipping"]["mu0_stderr"]
+    assert out["setup"]["omega_rad_s"] == pytest.approx(rig.setup.omega)
+    assert out["setup"]["mass_kg"] == config["film"]["mass_kg"]
+    assert out["slipping"]["mu0_dim_kg_per_s"] == pytest.approx(
+        out["slipping"]["mu0"] * config["film"]["mass_kg"] * rig.setup.omega
+    )
+
+
+def test_rig_of_the_configuration() -> None:
+    """Section film: a 1 cm steel ball (7850 kg/m^3) at 33 1/3 rpm, put down at rest 5 cm
+    from the axis, filmed at 240 frames/s for 10 s with 0.2 mm noise."""
+    import yaml
+
+    section = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())["film"]
+    rig = film.rig_from_config(section)
+    assert 2 * rig.setup.radius == pytest.approx(0.01)
+    assert rig.mass == pytest.approx(7850 * 4 / 3 * math.pi * rig.setup.radius**3, rel=1e-3)
+    assert rig.setup.omega == pytest.approx(2 * math.pi * (100 / 3) / 60)
+    assert (rig.camera.fps, rig.camera.noise, rig.camera.duration) == (240.0, 2e-4, 10.0)
+    assert list(rig.state0) == [10.0, 0.0, 0.0, 0.0, 0.0, 0.0]

@@ -46,6 +46,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from results_file import merge_results
 
 ROOT = Path(__file__).resolve().parents[1]
+# (an older checkout may still have its Snakefile at the root: copied when it exists)
 SOURCES = ["Snakefile", "config", "workflow", "scripts", "paper", "src", "profiles"]
 TARGETS = {
     "clean_build_s": 6.0,
@@ -86,8 +87,9 @@ def one_repeat(tree: Path, cores: int) -> dict[str, Any]:
     run = {"load_average_1min_before": round(os.getloadavg()[0], 2)}
     try:
         for name in SOURCES:
-            copy = shutil.copytree if (tree / name).is_dir() else shutil.copy2
-            copy(tree / name, workdir / name)
+            if (tree / name).exists():
+                copy = shutil.copytree if (tree / name).is_dir() else shutil.copy2
+                copy(tree / name, workdir / name)
 
         def cmd(*args: str) -> list[str]:
             return [snakemake, *args, "--cores", str(cores), "--quiet", "all"]

@@ -3,8 +3,9 @@
 
 Caption: growth rate alpha1 of the unstable modes, decay rate |alpha2| of the damped modes
 and their common frequency beta (2.5), against the friction coefficient mu0 (k = 2/5 by
-default). Dashed: the small-friction asymptote sqrt(mu0/2), shared by all three, and the
-large-friction expansion (3.2). The dot marks the maximum of alpha1 (a = golden ratio).
+default). Dotted: the small-friction asymptote beta ~ sqrt(mu0/2); dashed: the
+large-friction expansion (3.2); each drawn where its relative difference from the exact
+rate is at most `asymptote_within`. The dot marks the maximum of alpha1 (a = golden ratio).
 """
 
 # %%
@@ -20,7 +21,14 @@ s = turntable.spectrum(mu0, k)
 small = turntable.small_friction_expansion(mu0, k)
 large = turntable.large_friction_expansion(mu0, k)
 peak = turntable.alpha1_peak(k)
-lo, hi = mu0 < 4.0 * peak.mu0, mu0 > 0.5 * peak.mu0
+
+
+def near(approx, exact):
+    """The approximation where it is within `asymptote_within` of the exact values, NaN
+    elsewhere (relative difference)."""
+    close = np.abs(approx / exact - 1.0) <= snakemake.params.asymptote_within
+    return np.where(close, approx, np.nan)
+
 
 # %%
 fig, ((ax,),) = subplots(1, 1, (SINGLE, 2.8), margins=(0.55, 0.1, 0.4, 0.22))
@@ -30,9 +38,13 @@ for y, label, y_large in [
     (s.beta, r"$\beta$", large.beta),
 ]:
     ax.plot(mu0, y, label=label, lw=2.0, alpha=0.8)
-    ax.plot(mu0[hi], y_large[hi], "k--", lw=0.7)
+    ax.plot(mu0, near(y_large, y), "k--", lw=0.7)
 ax.plot(
-    mu0[lo], small.beta[lo], "k:", lw=1.0, label=r"small $\mu_0$: $\beta \approx \sqrt{\mu_0/2}$"
+    mu0,
+    near(small.beta, s.beta),
+    "k:",
+    lw=1.0,
+    label=r"small $\mu_0$: $\beta \approx \sqrt{\mu_0/2}$",
 )
 ax.plot([], [], "k--", lw=0.7, label=r"large $\mu_0$: first terms in $1/\mu_0$")
 ax.plot(peak.mu0, peak.alpha1, "o", color="C0", ms=4)

@@ -22,7 +22,7 @@ p = snakemake.params
 z0 = turntable.no_slip_state(p.state, p.k)
 delta = float(rolling.matched_delta(p.mu0, p.k, p.comparison))
 t = np.linspace(*p.t_span, p.n_points)
-fig, axes = subplots(2, 2, (DOUBLE, 5.6), (0.55, 0.15, 0.45, 0.25), (0.6, 0.6))
+fig, axes = subplots(2, 2, (DOUBLE, 5.8), (0.55, 0.15, 0.45, 0.45), (0.6, 0.6))
 (ax_s, ax_r), (ax_c, ax_g) = axes
 
 # %%
@@ -40,15 +40,21 @@ runs = [
         rf"rolling, $\delta = {delta:.4g}$ ({p.comparison.replace('_', ' ')})",
     ),
 ]
+# Both paths on the same scale, so that the panels have the same size and can be compared.
+xy = np.concatenate([slip[:, :2], roll[:, :2]])
+pad = 0.05 * np.ptp(xy, axis=0).max()
+lims = [(lo - pad, hi + pad) for lo, hi in zip(xy.min(axis=0), xy.max(axis=0), strict=True)]
 for ax, z, c, color, title in runs:
     ax.plot(z[:, 0], z[:, 1], color=color, lw=0.8)
-    ax.plot(c[:, 0], c[:, 1], "k--", lw=1.0, label="centre")
-    ax.plot(*c[-1], "ko", ms=4)
+    ax.plot(c[:, 0], c[:, 1], "k--", lw=1.0, label="spiral centre over time")
+    ax.plot(*c[-1], "ko", ms=4, label=f"spiral centre at $t\\Omega = {t[-1]:g}$")
     ax.plot(*z0[:2], "o", mfc="w", mec="k", ms=4, label="$z(0)$")
     ax.plot(0, 0, "k+", ms=8, label="axis")
-    ax.set(aspect="equal", xlabel="$x/R$", ylabel="$y/R$", title=title)
+    ax.set(aspect="equal", xlim=lims[0], ylim=lims[1], xlabel="$x/R$", ylabel="$y/R$")
+    ax.set_title(title)
     ax_c.plot(t, np.hypot(*c.T), color=color, label=title)
-ax_s.legend(loc="lower right", fontsize=6)
+handles, labels = ax_r.get_legend_handles_labels()
+fig.legend(handles, labels, loc="upper center", ncols=4, fontsize=6, frameon=False)
 ax_c.set(
     xlabel=r"time $t\Omega$", ylabel="distance of the centre from the axis $/R$", ylim=(0, None)
 )

@@ -46,6 +46,14 @@ ax_d.set(xlabel=r"$\mu_0$", ylabel="rms distance / noise")
 ax_p = ax_d.twinx()
 ax_p.semilogx(mu0, table.selection_probability, "C2", label="P(AIC selects slipping)")
 ax_p.axhline(p.selection_probability, color="C2", ls=":", lw=0.8)
+ax_p.text(
+    mu0[0],
+    p.selection_probability - 0.01,
+    f"{p.selection_probability:g}",
+    color="C2",
+    va="top",
+    fontsize=7,
+)
 ax_p.set(ylim=(0, 1.02), ylabel="P(AIC selects slipping)")
 ax_p.yaxis.label.set_color("C2")
 for ax in (ax_se, ax_d):
@@ -59,9 +67,10 @@ ax_se.text(
     va="top",
     fontsize=7,
 )
-ax_se.legend(fontsize=7, loc="lower right")
-ax_d.legend(fontsize=7, loc="lower left")
-ax_p.legend(fontsize=7, loc="center left")
+ax_se.legend(fontsize=7, loc="lower left")
+lines = ax_d.get_legend_handles_labels()
+twin = ax_p.get_legend_handles_labels()
+ax_d.legend(lines[0] + twin[0], lines[1] + twin[1], fontsize=7, loc="lower left")
 cam = rig.camera
 fig.suptitle(
     f"{2 * rig.setup.radius * 1e3:g} mm ball at {rig.setup.omega:.3g} rad/s; "

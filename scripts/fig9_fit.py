@@ -22,7 +22,7 @@ names = list(p.films)
 films = [film.read_film(path) for path in snakemake.input.csv]
 results = [json.loads(Path(path).read_text()) for path in snakemake.input.json]
 fig, axes = subplots(
-    len(names), 3, (DOUBLE, 2.5 * len(names) + 0.7), (0.6, 0.15, 0.45, 0.45), (0.7, 0.55)
+    len(names), 3, (DOUBLE, 2.5 * len(names) + 1.0), (0.6, 0.15, 0.45, 0.6), (0.7, 0.85)
 )
 
 # %%
@@ -33,10 +33,9 @@ for row, name, data, res in zip(axes, names, films, results, strict=True):
     row[1].legend(fontsize=5.5, loc="lower right")
     symbol = {"mu0": r"$\mu_0$", "delta": r"$\delta$"}[fitplot.COEFFICIENT[truth["model"]]]
     row[0].set_title(
-        f"synthetic film {name}: true {symbol} = {truth['coefficient']:g}; selected: "
-        f"{fitplot.STYLE[res['selected']][1].split()[0]}",
+        f"synthetic film '{name}': true {symbol} = {truth['coefficient']:g}\n"
+        f"selected: {fitplot.STYLE[res['selected']][1]}",
         fontsize=7,
-        loc="left",
     )
 handles, labels = axes[0, 0].get_legend_handles_labels()
 labels = [label.split(":")[0] for label in labels]

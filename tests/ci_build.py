@@ -28,7 +28,7 @@ ROOT = Path(__file__).resolve().parents[1]
 SNAKEMAKE = str(Path(sys.executable).with_name("snakemake"))
 # The one list of the figures (the workflow generates a rule for each).
 FIGURE_NAMES: list[str] = yaml.safe_load((ROOT / "workflow" / "figures.yaml").read_text())
-COPIED = ["Snakefile", "config", "workflow", "scripts", "paper", "src", "profiles"]
+COPIED = ["config", "workflow", "scripts", "paper", "src", "profiles"]
 TARGETS = ["readme_figure"]
 
 

@@ -95,3 +95,24 @@ def test_any_verdict_other_than_confirmed_is_listed(verdict: str) -> None:
     spec.loader.exec_module(module)
     lines = module.claims_lines(_report({"x.y": verdict}))
     assert lines[2].split()[:2] == [verdict, "x.y"]
+
+
+@pytest.mark.parametrize(
+    "summary",
+    [
+        pytest.param("bound " + "x" * 60 + " constant to 1.3e-15 relative, other", id="word"),
+        pytest.param("a" * 70 + " first 2.5e-08; second 1.25e-15 and more", id="clause"),
+        pytest.param("x" * 200, id="one-word"),
+    ],
+)
+def test_a_long_summary_is_never_cut_inside_a_number(summary: str) -> None:
+    """A cut line ends with " ..." after a whole word or clause, at most 110 characters."""
+    spec = importlib.util.spec_from_file_location("build_summary", TOOL)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    full = "  refined     some.claim  " + summary
+    line = module.shorten(full)
+    assert len(line) <= module.WIDTH
+    assert line.endswith(" ...")
+    words = [w.rstrip(",;") for w in full.split()]
+    assert all(word.rstrip(",;") in words for word in line.removesuffix(" ...").split()), line

@@ -54,7 +54,7 @@ def snakemake_cmd(workdir: Path, *args: str, cores: int = 2) -> list[str]:
     return [
         SNAKEMAKE,
         "--snakefile",
-        str(ROOT / "Snakefile"),
+        str(ROOT / "workflow" / "Snakefile"),
         "--directory",
         str(workdir),
         "--cores",

@@ -44,7 +44,7 @@ def test_make_targets_in_readme_exist() -> None:
 def test_paths_in_readme_exist() -> None:
     """Every committed path the README names in backquotes exists."""
     committed = [
-        "Snakefile",
+        "workflow/Snakefile",
         "config/config.yaml",
         "profiles/slurm/config.yaml",
         "workflow/report",

@@ -9,6 +9,7 @@ from __future__ import annotations
 import copy
 import importlib.util
 import json
+import re
 import sys
 import tomllib
 from pathlib import Path
@@ -75,7 +76,10 @@ def test_metadata_agree() -> None:
     zenodo = json.loads((ROOT / ".zenodo.json").read_text(encoding="utf-8"))
     project = _pyproject()["project"]
     assert cff["version"] == zenodo["version"] == project["version"]
-    assert cff["license"] == zenodo["license"] == project["license"] == "MIT"
+    assert cff["license"] == project["license"] == "MIT"
+    # Zenodo's deposit takes the id of its own licence vocabulary: the SPDX id in lower case
+    # (a deposit with "MIT" is refused).
+    assert zenodo["license"] == "mit"
     assert cff["title"] == zenodo["title"]
     related = {r["identifier"]: r for r in zenodo["related_identifiers"]}
     assert related[PAPER_DOI]["scheme"] == "doi"
@@ -145,3 +149,22 @@ def test_workflow_catalog_file() -> None:
     if deploy["conda"]:
         envs = sorted((ROOT / "workflow" / "envs").glob("*.yaml"))
         assert envs
+        for smk in (ROOT / "workflow" / "rules").glob("*.smk"):
+            text = smk.read_text()
+            runs = len(re.findall(r"^\s+(?:script|shell):", text, re.M))
+            assert len(re.findall(r"^\s+conda:", text, re.M)) == runs, smk.name
+
+
+def test_standardized_usage_layout() -> None:
+    """The catalogue lists a workflow under "standardized usage" (and reads its usage file)
+    only with the main Snakefile at workflow/Snakefile and configuration instructions in
+    config/README.md; the instructions name every section of the configuration."""
+    assert (ROOT / "workflow" / "Snakefile").is_file()
+    assert not (ROOT / "Snakefile").exists()
+    readme = (ROOT / "config" / "README.md").read_text(encoding="utf-8")
+    config = yaml.safe_load((ROOT / "config" / "config.yaml").read_text(encoding="utf-8"))
+    figures = yaml.safe_load((ROOT / "workflow" / "figures.yaml").read_text(encoding="utf-8"))
+    for section in config:
+        named = f"`{section}`" in readme
+        in_range = section in figures and f"`{figures[0]}` … `{figures[-1]}`" in readme
+        assert named or in_range, section

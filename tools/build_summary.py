@@ -20,6 +20,21 @@ def _counts(verdicts: list[str], order: list[str]) -> str:
     return ", ".join(f"{verdicts.count(v)} {v}" for v in names)
 
 
+def shorten(line: str, width: int = WIDTH) -> str:
+    """``line`` cut to at most ``width`` characters, followed by " ...": at the end of a
+    clause ("; " or ", ") among the last 25 characters kept, else at the end of a word, so
+    that a number is never cut short."""
+    if len(line) <= width:
+        return line
+    head = line[: width - 4]
+    for sep in ("; ", ", "):
+        cut = head.rfind(sep)
+        if cut >= len(head) - 25:
+            return head[:cut] + " ..."
+    cut = head.rfind(" ")
+    return (head[:cut] if cut > 0 else head) + " ..."
+
+
 def claims_lines(report: dict, table: str = "results/claims.md") -> list[str]:
     """Verdict counts (all, then the paper's apart from the additions), then one line per
     claim whose verdict is not 'confirmed', then where the full table is."""
@@ -41,7 +56,7 @@ def claims_lines(report: dict, table: str = "results/claims.md") -> list[str]:
         if claim["verdict"] == "confirmed":
             continue
         line = f"  {claim['verdict']:<11} {cid:<{width}}  {claim['summary']}"
-        lines.append(line if len(line) <= WIDTH else line[: WIDTH - 3] + "...")
+        lines.append(shorten(line))
     lines.append(f"full table: {table} (and in results/report.html); article: paper/paper.pdf")
     return lines
 

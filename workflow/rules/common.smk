@@ -3,20 +3,23 @@
 import os
 from pathlib import Path
 
+# The root of the repository (the main Snakefile is workflow/Snakefile).
+ROOT = Path(workflow.basedir).parent
+
 
 def source(path):
     """A file of the repository (`path` relative to it), as a path relative to the working
     directory: the same string wherever the work tree is moved or copied, so that Snakemake's
     record of a job's inputs still matches. Also right with --directory elsewhere.
     """
-    return os.path.relpath(Path(workflow.basedir, path))
+    return os.path.relpath(ROOT / path)
 
 
 def sources(folder):
     """Every file under `folder` of the repository (found by glob: a new module is included),
     as paths from source(), compiled Python left out.
     """
-    root = Path(workflow.basedir)
+    root = ROOT
     return sorted(
         source(p.relative_to(root))
         for p in Path(root, folder).rglob("*")

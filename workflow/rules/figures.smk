@@ -4,9 +4,7 @@
 # so that editing a value reruns only the figures that read it.
 import yaml
 
-FIGURE_NAMES = yaml.safe_load(
-    Path(workflow.basedir, "workflow", "figures.yaml").read_text()
-)
+FIGURE_NAMES = yaml.safe_load(Path(workflow.basedir, "figures.yaml").read_text())
 FIGURES = expand("figures/{name}.{ext}", name=FIGURE_NAMES, ext=["pdf", "png"])
 
 

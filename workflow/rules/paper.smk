@@ -3,8 +3,7 @@
 # script compiles a copy of the inputs, so that the rule also runs with --directory elsewhere.
 
 PAPER_SOURCES = sorted(
-    source(p)
-    for p in ["paper/references.bib", *Path(workflow.basedir).glob("paper/*.typ")]
+    source(p) for p in ["paper/references.bib", *ROOT.glob("paper/*.typ")]
 )
 
 

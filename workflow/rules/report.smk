@@ -31,11 +31,14 @@ rule claims_table:
         "../scripts/claims_table.py"
 
 
-# Every figure with its caption on one page of the HTML report (category "Overview").
+# The animation and every figure, each with its caption, on one page of the HTML report
+# (category "Overview").
 rule figure_gallery:
     input:
         pngs=expand("figures/{name}.png", name=FIGURE_NAMES),
         captions=[source(f"workflow/report/{name}.rst") for name in FIGURE_NAMES],
+        animation="figures/animation.gif",
+        animation_caption=source("workflow/report/animation.rst"),
     output:
         ensure(
             report(

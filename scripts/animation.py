@@ -21,8 +21,8 @@ setup(snakemake)
 p = snakemake.params
 t = np.linspace(0.0, p.t_end, (p.n_frames - 1) * p.substeps + 1)
 models = {
-    f"slipping, mu0 = {p.mu0:g}": turntable.solve(p.state, t, p.mu0, p.k),
-    "no slip (mu0 -> infinity)": turntable.nonholonomic(p.state, t, p.k),
+    f"slipping, μ₀ = {p.mu0:g}": turntable.solve(p.state, t, p.mu0, p.k),
+    "no slip (μ₀ → ∞)": turntable.nonholonomic(p.state, t, p.k),
 }
 attitudes = {
     name: integrate_orientation(t, ball_angular_velocity(z, p.wz)) for name, z in models.items()

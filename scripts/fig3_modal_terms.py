@@ -4,8 +4,8 @@
 Caption: the coordinate x(t) = x0 + x+(t) + x-(t) of the centre of the ball split as in
 (2.7): x+ (modes alpha1 +- i beta, growing) and x- (modes alpha2 +- i beta, decaying), for
 each friction coefficient mu0 of the configuration; initial state x = y = 1, v = w = 0,
-k = 2/5 by default, over the configured span (t <= 8 by default, a fraction of one period
-2 pi/beta): x- dies out within it, well before the end of the first period.
+k = 2/5 by default, over the configured span (t <= 8 by default); each panel gives that span
+in periods 2 pi/beta.
 """
 
 # %%
@@ -28,6 +28,9 @@ for ax, mu0 in zip(axes[0], p.mu0, strict=True):
     ax.plot(t, terms.minus[:, 0], "--", label=r"$x_-$")
     ax.axhline(0.0, color="k", lw=0.4)
     ax.set(xlabel=r"time $t\Omega$", title=rf"$\mu_0 = {mu0:g}$, $k = {p.k:g}$", xlim=p.t_span)
+    periods = (p.t_span[1] - p.t_span[0]) * float(turntable.spectrum(mu0, p.k).beta) / (2 * np.pi)
+    ax.text(0.97, 0.04, f"span: {periods:.2g} periods $2\\pi/\\beta$", transform=ax.transAxes,
+            ha="right", fontsize=7)  # fmt: skip
 axes[0, 0].set_ylabel(r"displacement (units of $R$)")
 axes[0, 0].legend(loc="best")
 save(fig, snakemake)

@@ -27,7 +27,7 @@ for k in p.k:
     ax_ex.plot(mu0, log_n / (2.0 * np.pi) - 1.0, label=f"$k = {k:.3g}$")
 ax.axhline(bound, color="k", ls=":", lw=1.0, label=rf"$2\pi \log_{{10}} e = {bound:.4f}$")
 ax.set(xscale="log", yscale="log", ylabel=r"$\log_{10} N$", title="(a) damping per period")
-ax_ex.set(xscale="log", yscale="log", ylabel=r"$\ln N / 2\pi - 1 = |\alpha_2|/\beta - 1$")
+ax_ex.set(xscale="log", yscale="log", ylabel=r"$\ln N / (2\pi) - 1 = |\alpha_2|/\beta - 1$")
 ax_ex.set_title("(b) excess over the bound")
 for a in (ax, ax_ex):
     a.set_xlabel(r"friction $\mu_0$ (units of $m\Omega$)")

@@ -2,12 +2,13 @@
 """Figure 7: slipping with viscous friction against rolling with rolling resistance.
 
 Caption: top, path of the centre of the slipping ball (coefficient mu0, left) and of the
-rolling ball (coefficient delta matched to mu0 by the configured comparison, right), both
-from the same state on the no-slip constraint; dashed: each spiral's centre over time (fixed
-for slipping, drifting into the turntable's axis for rolling). Bottom left: distance of each
-centre from the axis against time. Bottom right: log growth of the spiral per turn against
-mu0, slipping and rolling under the comparisons (a) delta = mu0, (b) equal dissipated power,
-(c) equal decay of the non-growing part.
+rolling ball (coefficient delta matched to mu0 by the configured comparison, middle), both
+from the same state on the no-slip constraint, on one scale; dashed: each spiral's centre
+over time (fixed for slipping, drifting into the turntable's axis for rolling); right:
+distance of each centre from the axis against time. Bottom, against mu0, for slipping and
+for rolling under the comparisons (a) delta = mu0, (b) equal dissipated power, (c) equal
+decay of the non-growing part: left, log growth of the spiral per turn; middle, its growth
+rate per unit time; right, the ratio slipping over rolling of both measures.
 """
 
 # %%
@@ -22,23 +23,18 @@ p = snakemake.params
 z0 = turntable.no_slip_state(p.state, p.k)
 delta = float(rolling.matched_delta(p.mu0, p.k, p.comparison))
 t = np.linspace(*p.t_span, p.n_points)
-fig, axes = subplots(2, 2, (DOUBLE, 5.8), (0.55, 0.15, 0.45, 0.45), (0.6, 0.6))
-(ax_s, ax_r), (ax_c, ax_g) = axes
+fig, axes = subplots(2, 3, (DOUBLE, 5.0), (0.5, 0.12, 0.42, 0.45), (0.55, 0.6))
+(ax_s, ax_r, ax_c), (ax_g, ax_t, ax_q) = axes
 
 # %%
 slip = turntable.solve(z0, t, p.mu0, p.k)
 centre_s = np.broadcast_to(turntable.spiral_centre(z0, p.k), (t.size, 2))
 roll = rolling.solve(z0, t, delta, p.k)
 centre_r = rolling.spiral_centre(z0, t, delta, p.k)
+name = p.comparison.replace("_", " ")
 runs = [
     (ax_s, slip, centre_s, "C0", rf"slipping, $\mu_0 = {p.mu0:g}$"),
-    (
-        ax_r,
-        roll,
-        centre_r,
-        "C3",
-        rf"rolling, $\delta = {delta:.4g}$ ({p.comparison.replace('_', ' ')})",
-    ),
+    (ax_r, roll, centre_r, "C3", rf"rolling, $\delta = {delta:.4g}$ ({name})"),
 ]
 # Both paths on the same scale, so that the panels have the same size and can be compared.
 xy = np.concatenate([slip[:, :2], roll[:, :2]])
@@ -51,26 +47,37 @@ for ax, z, c, color, title in runs:
     ax.plot(*z0[:2], "o", mfc="w", mec="k", ms=4, label="$z(0)$")
     ax.plot(0, 0, "k+", ms=8, label="axis")
     ax.set(aspect="equal", xlim=lims[0], ylim=lims[1], xlabel="$x/R$", ylabel="$y/R$")
-    ax.set_title(title)
+    ax.set_title(title, fontsize=7)
     ax_c.plot(t, np.hypot(*c.T), color=color, label=title)
 handles, labels = ax_r.get_legend_handles_labels()
 fig.legend(handles, labels, loc="upper center", ncols=4, fontsize=6, frameon=False)
-ax_c.set(
-    xlabel=r"time $t\Omega$", ylabel="distance of the centre from the axis $/R$", ylim=(0, None)
-)
-ax_c.legend(fontsize=6)
+ax_c.set(xlabel=r"time $t\Omega$", ylabel="centre's distance from the axis $/R$", ylim=(0, None))
+ax_c.legend(fontsize=5.5, loc="lower left")
 
 # %%
 mu0 = np.logspace(*np.log10(p.mu0_range), p.n_grid)
-ax_g.loglog(mu0, turntable.log_growth_per_turn(mu0, p.k), "k", lw=1.5, label="slipping")
+per_turn = turntable.log_growth_per_turn(mu0, p.k)
+per_time = turntable.spectrum(mu0, p.k).alpha1
+ax_g.loglog(mu0, per_turn, "k", lw=1.5, label="slipping")
+ax_t.loglog(mu0, per_time, "k", lw=1.5, label="slipping")
 styles = {
-    "equal_coefficient": ("C1", "-", r"(a) $\delta = \mu_0$"),
-    "equal_power": ("C2", "--", "(b) equal power"),
-    "equal_decay": ("C4", ":", "(c) equal decay"),
+    "equal_coefficient": ("C1", r"(a) $\delta = \mu_0$"),
+    "equal_power": ("C2", "(b) equal power"),
+    "equal_decay": ("C4", "(c) equal decay"),
 }
-for name, (color, ls, label) in styles.items():
-    g = rolling.log_growth_per_turn(rolling.matched_delta(mu0, p.k, name), p.k)
-    ax_g.loglog(mu0, g, color=color, ls=ls, label=f"rolling, {label}")
-ax_g.set(xlabel=r"$\mu_0$", ylabel="log growth per turn", title=rf"$k = {p.k:g}$")
-ax_g.legend(fontsize=6, loc="lower left")
+for comparison, (color, label) in styles.items():
+    matched = rolling.matched_delta(mu0, p.k, comparison)
+    turn_r = rolling.log_growth_per_turn(matched, p.k)
+    time_r = rolling.growth_rate(matched, p.k)
+    ax_g.loglog(mu0, turn_r, color=color, ls="--", label=f"rolling, {label}")
+    ax_t.loglog(mu0, time_r, color=color, ls="--", label=f"rolling, {label}")
+    ax_q.loglog(mu0, per_turn / turn_r, color=color, label=f"{label}, per turn")
+    ax_q.loglog(mu0, per_time / time_r, color=color, ls=":", label=f"{label}, per unit time")
+ax_q.axhline(1.0, color="0.5", lw=0.8)
+ax_g.set(xlabel=r"$\mu_0$", ylabel="log growth per turn")
+ax_t.set(xlabel=r"$\mu_0$", ylabel=r"growth rate per unit time $/\Omega$")
+ax_q.set(xlabel=r"$\mu_0$", ylabel="slipping / rolling")
+ax_g.legend(fontsize=5.5, loc="lower left")
+ax_q.legend(fontsize=5, loc="upper right", ncols=1)
+ax_t.set_title(rf"$k = {p.k:g}$", fontsize=7)
 save(fig, snakemake)

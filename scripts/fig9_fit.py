@@ -6,7 +6,8 @@ tracked positions and the paths of both fitted models (read from the JSON the co
 wrote); middle, the residuals per coordinate against time (points: each frame; line: rms
 over a moving window), labelled with each fitted coefficient; right, the recovered
 coefficient of the true model minus the truth in units of its standard error (bars: two
-standard errors), and the AIC difference in favour of the selected model.
+standard errors), and the AICc difference in favour of the selected model (hatched if not
+decisive). The data are SYNTHETIC (simulated, marked so in their files and in the JSON).
 """
 
 # %%
@@ -14,7 +15,7 @@ import json
 from pathlib import Path
 
 from _style import DOUBLE, save, setup, subplots
-from turntable import film, fitplot
+from turntable import film, fit, fitplot
 
 setup(snakemake)
 p = snakemake.params
@@ -32,9 +33,10 @@ for row, name, data, res in zip(axes, names, films, results, strict=True):
     fitplot.draw_residuals(row[1], data, res, coefficients=True)
     row[1].legend(fontsize=5.5, loc="lower right")
     symbol = {"mu0": r"$\mu_0$", "delta": r"$\delta$"}[fitplot.COEFFICIENT[truth["model"]]]
+    selected = res["selected"]
     row[0].set_title(
-        f"synthetic film '{name}': true {symbol} = {truth['coefficient']:g}\n"
-        f"selected: {fitplot.STYLE[res['selected']][1]}",
+        f"SYNTHETIC film '{name}': true {symbol} = {truth['coefficient']:g}\n"
+        + (f"selected: {fitplot.STYLE[selected][1]}" if selected else "no model selected"),
         fontsize=7,
     )
 handles, labels = axes[0, 0].get_legend_handles_labels()
@@ -47,12 +49,23 @@ for i, (name, res) in enumerate(zip(names, results, strict=True)):
     truth = p.films[name]
     coefficient = fitplot.COEFFICIENT[truth["model"]]
     entry = res[truth["model"]]
-    z = (entry[coefficient] - truth["coefficient"]) / entry[f"{coefficient}_stderr"]
-    ax_z.errorbar(i, z, yerr=2.0, fmt="o", color=fitplot.STYLE[truth["model"]][0], capsize=3)
-    ax_aic.bar(i, res["selection"]["aic_difference"], color=fitplot.STYLE[res["selected"]][0])
+    if entry[coefficient] is not None and entry[f"{coefficient}_stderr"]:
+        z = (entry[coefficient] - truth["coefficient"]) / entry[f"{coefficient}_stderr"]
+        ax_z.errorbar(i, z, yerr=2.0, fmt="o", color=fitplot.STYLE[truth["model"]][0], capsize=3)
+    else:  # a limit, not a value (turntable fit warned)
+        ax_z.text(i, 0.0, "limit only", ha="center", fontsize=6)
+    sel = res["selection"]
+    if res["selected"] is not None and sel["aicc_difference"] is not None:
+        ax_aic.bar(
+            i,
+            sel["aicc_difference"],
+            color=fitplot.STYLE[res["selected"]][0],
+            hatch=None if sel["decisive"] else "//",
+        )
 ax_z.axhline(0.0, color="k", lw=0.8)
 ax_z.set(ylim=(-4.5, 4.5), ylabel="(fitted - true) / standard error")
-ax_aic.set(yscale="log", ylim=(1.0, None), ylabel="AIC difference for the selected model")
+ax_aic.axhline(fit.DECISIVE, color="0.5", lw=0.6, ls=":")  # decisive above
+ax_aic.set(yscale="log", ylim=(1.0, None), ylabel="AICc difference for the selected model")
 for ax in (ax_z, ax_aic):
     ax.set(xticks=range(len(names)), xticklabels=names, xlim=(-0.7, len(names) - 0.3))
 for ax in axes[2:, 2]:

@@ -36,7 +36,7 @@ for i, r in enumerate(results):
     ax_a.plot(r["peak"]["mu0"], r["peak"]["alpha1"], "o", color=f"C{i}", ms=4)
     ax_n.loglog(r["mu0"], np.asarray(r["decay_ratio"]) - 1.0, color=f"C{i}", label=label)
 ax_a.set(xlabel=r"$\mu_0$", ylabel=r"$\alpha_1$", title=r"(a) growth rate $\alpha_1$")
-ax_n.set(xlabel=r"$\mu_0$", ylabel=r"$\ln N / 2\pi - 1 = |\alpha_2|/\beta - 1$")
+ax_n.set(xlabel=r"$\mu_0$", ylabel=r"$\ln N / (2\pi) - 1 = |\alpha_2|/\beta - 1$")
 ax_n.set_title(r"(b) damping per period, excess over the bound $e^{2\pi}$")
 ax_a.legend(fontsize=6)
 ax_n.legend(fontsize=6)

@@ -13,6 +13,7 @@ take seconds (tests/test_pipeline.py).
 
 from __future__ import annotations
 
+import os
 import shutil
 import subprocess
 import sys
@@ -32,11 +33,20 @@ COPIED = ["config", "workflow", "scripts", "paper", "src", "profiles"]
 TARGETS = ["readme_figure"]
 
 
+def copy_env(workdir: Path) -> dict[str, str]:
+    """The environment of the project's .venv running the copy of the sources in `workdir`:
+    the copy's src/ first on the module path, so that its jobs import the copy's package
+    (the Snakefile refuses to run another tree's package: the editable install of .venv is
+    the project's src/, not the copy's)."""
+    return os.environ | {"PYTHONPATH": str(workdir / "src")}
+
+
 def snakemake(workdir: Path, *args: str, timeout: float = 300) -> subprocess.CompletedProcess:
-    """Run snakemake with `args` in `workdir`."""
+    """Run snakemake with `args` in `workdir`, a copy of the sources."""
     return subprocess.run(
         [SNAKEMAKE, *args],
         cwd=workdir,
+        env=copy_env(workdir),
         capture_output=True,
         text=True,
         timeout=timeout,
@@ -92,6 +102,7 @@ def _build(workdir: Path) -> dict[str, Any]:
         return subprocess.Popen(
             [SNAKEMAKE, *args],
             cwd=cwd,
+            env=copy_env(cwd),
             stdout=subprocess.PIPE,
             stderr=subprocess.STDOUT,
             text=True,

@@ -25,7 +25,7 @@ import yaml
 import turntable
 from turntable import claims
 from turntable.claims import report
-from turntable.claims._core import within
+from turntable.claims._core import mu0_grid, within
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -41,6 +41,8 @@ FIELDS = {
     "summary",
     "evidence",
     "verdict",
+    "expected",
+    "gist",
 }
 
 
@@ -138,6 +140,16 @@ def test_registration_refuses_a_claim_without_expected_verdict_or_paper_value() 
     with pytest.raises(ValueError, match="paper_value"):
         claims.register(
             "x.y", where=where, claim="c.", paper_value={}, method="m", expected="confirmed"
+        )
+    with pytest.raises(ValueError, match="gist"):
+        claims.register(
+            "x.y",
+            where=where,
+            claim="c.",
+            paper_value={"text": "t"},
+            method="m",
+            expected="confirmed",
+            gist=" ",
         )
     with pytest.raises(ValueError, match="tolerance keys without a reproduced value"):
         claims.Outcome("confirmed", {"a": 1.0}, {"b": 1.0}, "s", "e")
@@ -347,22 +359,28 @@ def test_wrong_torque_arm_of_the_dimensional_model_fails(monkeypatch: pytest.Mon
 
 
 @pytest.mark.parametrize(
-    "error",
-    [pytest.param(1e-5, id="rates-off-1e-5"), pytest.param(3e-9, id="rates-off-3e-9")],
+    ("rate", "error"),
+    [
+        pytest.param("alpha1", 1e-5, id="alpha1-alone-off-1e-5"),
+        pytest.param("beta", 3e-9, id="beta-alone-off-3e-9"),
+    ],
 )
-def test_spiral_with_wrong_rates_fails(monkeypatch: pytest.MonkeyPatch, error: float) -> None:
-    """Predicted alpha1 and beta off by a small relative error: the fits must notice."""
+def test_spiral_with_a_wrong_rate_fails(
+    monkeypatch: pytest.MonkeyPatch, rate: str, error: float
+) -> None:
+    """Predicted alpha1 alone or beta alone off by a small relative error: the fit of that
+    rate must notice, each with its own bound (1e-6 on the growth rate, 1e-9 on the
+    angular rate), so that loosening either bound alone is caught."""
     from turntable import reference as ref
 
     exact = ref.float_spectrum
 
     def off(matrix: np.ndarray) -> ref.MpSpectrum:
         e = exact(matrix)
-        return e._replace(alpha1=e.alpha1 * (1 + error), beta=e.beta * (1 + error))
+        return e._replace(**{rate: getattr(e, rate) * (1 + error)})
 
     monkeypatch.setattr(ref, "float_spectrum", off)
-    result = claims.evaluate("trajectory.spiral", SMALL)
-    assert result["verdict"] == "failed"
+    assert claims.evaluate("trajectory.spiral", SMALL)["verdict"] == "failed"
 
 
 def test_spiral_about_a_misplaced_centre_fails(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -436,6 +454,98 @@ def test_wrong_dimensional_spin_fails(monkeypatch: pytest.MonkeyPatch) -> None:
 
     monkeypatch.setattr(checks, "_dimensional_matrix", faster)
     assert claims.evaluate("spectrum.kernel", SMALL)["verdict"] == "failed"
+
+
+#: The wrong models below break a statement at a few points of the mu0 grid only, in a
+#: window away from every probe, reference and small mu0 of SMALL, so that only the check
+#: of the statement on the grid can notice.  The grid of SMALL runs over 1e-6..1e6 (20
+#: points a decade); for the damping bound it is extended down to 1e-12, below every small
+#: mu0, since ln N increases with mu0 and can only fall below 2 pi at the low end.
+MIDDLE = (2.0, 5.0)
+LOWEST = (0.0, 1e-11)
+SMALL_FROM_1E_12 = {**SMALL, "mu0_range": [1e-12, 1e6]}
+
+
+def _in(window: tuple[float, float], mu0: Any) -> np.ndarray:
+    mu0 = np.asarray(mu0, dtype=float)
+    return (mu0 > window[0]) & (mu0 < window[1])
+
+
+def _alpha1_negative_somewhere(exact: Any) -> Any:
+    """`turntable.spectrum` with alpha1 of the opposite sign (> -1) for mu0 in MIDDLE."""
+
+    def wrong(mu0: Any, k: Any) -> turntable.Spectrum:
+        s = exact(mu0, k)
+        return s._replace(alpha1=np.where(_in(MIDDLE, mu0), -s.alpha1, s.alpha1))
+
+    return wrong
+
+
+def _per_turn_rising_somewhere(exact: Any) -> Any:
+    """`turntable.log_growth_per_turn` doubled for mu0 in MIDDLE: it rises on entering it."""
+
+    def wrong(mu0: Any, k: Any) -> np.ndarray:
+        return np.where(_in(MIDDLE, mu0), 2.0 * exact(mu0, k), exact(mu0, k))
+
+    return wrong
+
+
+def _ratio_below_one_somewhere(exact: Any) -> Any:
+    """`turntable.log_damping_ratio` less pi/2 for mu0 in LOWEST: |alpha2|/beta = 3/4 + o(1)
+    there, and ln N still increases with mu0 (it jumps up by pi/2 on leaving LOWEST)."""
+
+    def wrong(mu0: Any, k: Any) -> np.ndarray:
+        return exact(mu0, k) - np.where(_in(LOWEST, mu0), 0.5 * np.pi, 0.0)
+
+    return wrong
+
+
+@pytest.mark.parametrize(
+    ("claim_id", "name", "wrong", "window", "params"),
+    [
+        pytest.param(
+            "spectrum.unstable_focus",
+            "spectrum",
+            _alpha1_negative_somewhere,
+            MIDDLE,
+            SMALL,
+            id="unstable_focus-alpha1-negative-somewhere",
+        ),
+        pytest.param(
+            "trajectory.untwisting_slows",
+            "log_growth_per_turn",
+            _per_turn_rising_somewhere,
+            MIDDLE,
+            SMALL,
+            id="untwisting_slows-per-turn-rising-somewhere",
+        ),
+        pytest.param(
+            "solution.damping_ratio",
+            "log_damping_ratio",
+            _ratio_below_one_somewhere,
+            LOWEST,
+            SMALL_FROM_1E_12,
+            id="damping_ratio-ratio-below-1-somewhere",
+        ),
+    ],
+)
+def test_statement_broken_somewhere_fails(
+    monkeypatch: pytest.MonkeyPatch,
+    claim_id: str,
+    name: str,
+    wrong: Any,
+    window: tuple[float, float],
+    params: dict[str, Any],
+) -> None:
+    """A model that breaks the statement at a few grid points only, and only slightly
+    (alpha1 > -1, per-turn growth rising once, |alpha2|/beta > 1/2): the check must notice,
+    so it holds the statement everywhere on the grid and with the paper's strict bound."""
+    resolved = claims.resolve_params(params)
+    assert np.any(_in(window, mu0_grid(resolved)))
+    for key in ("mu0_probe", "mu0_reference", "mu0_small"):
+        assert not np.any(_in(window, resolved[key])), key
+    monkeypatch.setattr(turntable, name, wrong(getattr(turntable, name)))
+    assert claims.evaluate(claim_id, params)["verdict"] == "failed"
 
 
 def test_decaying_part_turning_with_the_plane_is_not_refined(

@@ -10,6 +10,7 @@ end to end on a copy of the shared clean build of tests/test_pipeline.py.
 
 from __future__ import annotations
 
+import json
 import re
 import shutil
 import subprocess
@@ -26,7 +27,7 @@ import test_pipeline as pipeline
 import turntable
 from shared_build import build_once, shared_dir
 from test_pipeline import sha256
-from turntable import rolling
+from turntable import fit, rolling
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "workflow"))
@@ -216,6 +217,33 @@ CASES: dict[str, tuple[Callable[[str], str], str, list[str]]] = {
         "t_span: [0.0, 5.0e+3]",
         ["fig7_rolling_resistance.t_span ends at t = 5000, too late for the rolling ball"],
     ),
+    "film too short for the fits (3 frames)": (
+        lambda t: replaced("  duration_s: 10.0", "  duration_s: 0.01", t),
+        "duration_s: 0.01",
+        [
+            "film.duration_s = 0.01 s at film.fps = 240 frames/s gives 3 frames",
+            "expected at least 16 frames: duration_s >= 0.0625",
+        ],
+    ),
+    "film of too many frames": (
+        lambda t: replaced("  fps: 240.0", "  fps: 1.0e+6", t),
+        "duration_s: 10.0",
+        ["gives 10000001 frames", "expected at most 1000000 frames"],
+    ),
+    "film beyond the overflow of a double": (
+        lambda t: replaced("  rpm: 33.333333333333336", "  rpm: 10000.0", t),
+        "duration_s: 10.0",
+        [
+            "film.duration_s = 10 s at film.rpm = 10000 ends at t Omega = 10472",
+            "slipping ball of Fig. 8 (mu0 = 0.0793254)",
+            "turntable.max_time); expected duration_s <= 7.86616",
+        ],
+    ),
+    "ball of the animation out of its panels": (
+        lambda t: replaced("  t_end: 40.0", "  t_end: 1000.0", t),
+        "t_end: 1000.0",
+        ["animation.t_end = 1000: by then the ball goes 1.905e+10 R", "pixels wide", "158.5 R"],
+    ),
     "unknown comparison": (
         lambda t: replaced("comparison: equal_power", "comparison: equal-power", t),
         "comparison: equal-power",
@@ -317,6 +345,31 @@ def test_many_mistakes_are_listed_in_file_order_and_cut_short(tmp_path: Path) ->
     assert numbers == sorted(numbers)
 
 
+def test_a_value_given_on_the_command_line_is_told_so(tmp_path: Path) -> None:
+    """A value that is not what the files give came from --config (Snakemake reads the values
+    inside a section given there as text): the message names the command line, not the
+    line of config.yaml that the command line overrode."""
+    path = tmp_path / "config.yaml"
+    path.write_text(CONFIG_TEXT)
+    config = yaml.safe_load(CONFIG_TEXT)
+    config["fig2_spectrum"]["n_points"] = "1e-4"  # --config 'fig2_spectrum={"n_points": 1e-4}'
+    config["style"]["dpi"] = 10
+    lines = str(config_checks.config_problem(config, [path])).splitlines()[1:]
+    assert len(lines) == 2, lines
+    assert all(line.startswith("--config (command line): ") for line in lines), lines
+    assert "fig2_spectrum.n_points = '1e-4' is text" in lines[1]
+    assert "pass it with --configfile" in lines[1]
+    assert "style.dpi = 10" in lines[0]
+    # a mistake of the file beside one of the command line: each told where it was made
+    config["style"]["dpi"] = 200
+    text = replaced("  tilt: 0.35", "  tilt: 2.0")
+    path.write_text(text)
+    config["fig1_schematic"]["tilt"] = 2.0
+    lines = str(config_checks.config_problem(config, [path])).splitlines()[1:]
+    assert lines[0].startswith(f"{path}:{line_of(text, 'tilt: 2.0')}: fig1_schematic.tilt"), lines
+    assert lines[1].startswith("--config (command line): fig2_spectrum.n_points"), lines
+
+
 def test_the_file_that_sets_a_bad_value_is_named(tmp_path: Path) -> None:
     """With --configfile, a value is told where it was written: in the file that overrides."""
     base = tmp_path / "config.yaml"
@@ -327,6 +380,93 @@ def test_the_file_that_sets_a_bad_value_is_named(tmp_path: Path) -> None:
     config["fig2_spectrum"]["n_points"] = 400.0
     got = config_checks.config_problem(config, [base, mine])
     assert f"{mine}:3: fig2_spectrum.n_points = 400.0" in str(got)
+
+
+def test_the_fewest_frames_count_the_parameters_of_the_larger_fit() -> None:
+    """MIN_FRAMES is two frames per parameter of the larger model of turntable fit, its noise
+    variance included; the fits need fewer (more coordinates than parameters) and so does
+    Fig. 8 (a positive number of residual degrees of freedom): the margin of the check."""
+    assert max(fit.n_parameters(m) for m in fit.MODELS) == config_checks.FIT_PARAMETERS
+    assert config_checks.MIN_FRAMES == 2 * (config_checks.FIT_PARAMETERS + 1)
+    assert 2 * 3 - config_checks.FIT_PARAMETERS < 0  # the 3 frames of issue 9's 0.01 s
+    # at least what turntable.fit needs to select a model, where it says so
+    assert getattr(fit, "min_frames", lambda: 0)() <= config_checks.MIN_FRAMES
+    # the count is turntable.film's
+    for fps, duration in [(240.0, 0.01), (240.0, 10.0), (30.0, 0.5), (29.97, 1.0 / 29.97)]:
+        camera = turntable.film.Camera(fps, 1e-4, duration)
+        n = turntable.film.frame_times(camera).size
+        assert config_checks.film_frames(fps, duration) == n, (fps, duration)
+
+
+def test_a_film_ends_where_its_rolling_ball_is_representable() -> None:
+    """The synthetic films of the rolling model are checked with turntable.rolling.solve at
+    the film's last frame (in t Omega), the limit found here by bisection."""
+    config = pipeline.base_config()
+    rolling_film = {"name": "rolling", "model": "rolling_resistance", "coefficient": 0.02}
+    config["synthetic_film"]["films"] = [
+        {**rolling_film, "seed": 1},
+        {**rolling_film, "name": "other", "seed": 2},
+    ]
+    config["fig8_measurability"]["mu0_range"] = [1.0e3, 1.0e4]  # slow growth there
+    film = config["film"]
+    film.update(rpm=10000.0, fps=10.0)
+    omega = turntable.film.rpm_to_omega(film["rpm"])
+    z0 = turntable.no_slip_state(turntable.film.rig_from_config(film).state0, film["k"])
+    low, high = 1.0, 1.0e6  # t Omega
+    for _ in range(60):
+        mid = (low * high) ** 0.5
+        try:
+            rolling.solve(z0, [mid], 0.02, film["k"])
+            low = mid
+        except ValueError:
+            high = mid
+    film["duration_s"] = 1.01 * high / omega
+    (problem,) = config_checks.problems(config)
+    assert problem.at == ("film", "duration_s")
+    assert "too late for the rolling ball of synthetic film 'rolling'" in problem.text
+    film["duration_s"] = 0.99 * low / omega
+    assert config_checks.problems(config) == []
+
+
+# --------------------------------------------------------------------------- checked before
+def test_a_configuration_that_passed_is_not_checked_again_until_anything_changes(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The record of config_checks.CheckRecord skips the checks of a configuration that passed,
+    unchanged; a change of the configuration, of a file or of what the checks read misses it,
+    and a refused configuration is never recorded."""
+    path = tmp_path / "config.yaml"
+    path.write_text(CONFIG_TEXT)
+    record = tmp_path / ".snakemake" / "config_checks.ok"
+    config = yaml.safe_load(CONFIG_TEXT)
+
+    def check(config: dict[str, Any]) -> tuple[bool, str | None]:
+        """(whether the record was used, the message)"""
+        checks = config_checks.CheckRecord([path], record)
+        return checks.checked(config), config_checks.workflow_problem(config, [path], checks)
+
+    assert check(config) == (False, None)
+    assert record.is_file()
+    assert check(config) == (True, None)
+    assert config_checks.CheckRecord([path], record).files_checked()
+    # a value of --config (or of another file), 400.0 for 400: checked, refused, not recorded
+    bad = yaml.safe_load(CONFIG_TEXT)
+    bad["fig2_spectrum"]["n_points"] = 400.0
+    used, message = check(bad)
+    assert not used
+    assert "fig2_spectrum.n_points = 400.0 is not an integer" in str(message)
+    assert check(bad)[0] is False
+    assert check(config) == (True, None)
+    # a comment in the file, or a change of the schema or of the package: checked again
+    path.write_text(CONFIG_TEXT + "# a comment\n")
+    assert not config_checks.CheckRecord([path], record).files_checked()
+    assert check(config) == (False, None)
+    read = list(config_checks._what_the_checks_read())
+    assert ROOT / "workflow/schemas/config.schema.yaml" in read
+    assert ROOT / "src/turntable/solution.py" in read
+    assert ROOT / "src/turntable/claims/params.schema.yaml" in read
+    monkeypatch.setattr(config_checks, "_what_the_checks_read", lambda: iter(read[:-1]))
+    assert check(config)[0] is False
 
 
 # --------------------------------------------------------------------------- time bounds
@@ -388,9 +528,9 @@ def test_the_rolling_ball_of_fig7_is_checked_with_its_own_growth() -> None:
     z0 = turntable.no_slip_state(fig7["state"], fig7["k"])
     slipping = float(turntable.max_time(fig7["mu0"], fig7["k"], z0))
     delta = float(rolling.matched_delta(fig7["mu0"], fig7["k"], "equal_coefficient"))
-    with pytest.raises(ValueError, match=r"t must be <= ([0-9.e+]+)") as info:
+    with pytest.raises(ValueError, match=r"t must be (?:<=|at most) ([0-9.e+]+)") as info:
         rolling.solve(z0, [slipping], delta, fig7["k"])
-    limit = float(re.search(r"<= ([0-9.e+]+)", str(info.value))[1])
+    limit = float(re.search(r"(?:<=|at most) ([0-9.e+]+)", str(info.value))[1])
     fig7["t_span"] = [0.0, 1.01 * limit]
     (problem,) = config_checks.problems(config)
     assert "rolling ball" in problem.text
@@ -473,6 +613,42 @@ def test_every_key_has_type_bounds_description_and_a_valid_default(at: tuple[str
     assert unbounded(at) == []
     assert len(prop.get("description", "")) > 10
     assert "default" in prop
+
+
+def test_the_configuration_file_holds_the_defaults_of_the_schema() -> None:
+    """config/config.yaml and the schema's `default:` entries give the same values (type
+    included), so that the two cannot drift apart."""
+    config = yaml.safe_load(CONFIG_TEXT)
+    assert list(config) == list(SCHEMA["properties"])
+    for section, values in config.items():
+        for key, value in values.items():
+            default = config_checks.key_schema((section, key)).get("default")
+            assert json.dumps(value) == json.dumps(default), (section, key, value, default)
+    # keys left out (the claims checks) take the schema's default, the one place they live
+    for key in config_checks.key_schema(("claims",))["properties"]:
+        assert (
+            key not in config["claims"]
+            or config["claims"][key] == (config_checks.key_schema(("claims", key))["default"])
+        )
+
+
+def _keys(at: tuple[str | int, ...]) -> list[tuple[str | int, ...]]:
+    """Every key below ``at``, also the keys of the entries of a list of sections."""
+    prop = config_checks.key_schema(at)
+    if prop.get("type") == "array" and config_checks.key_schema((*at, 0)).get("properties"):
+        return _keys((*at, 0))
+    found = []
+    for key in prop.get("properties", {}):
+        found += [(*at, key), *_keys((*at, key))]
+    return found
+
+
+def test_every_property_of_the_schema_has_type_description_and_default() -> None:
+    keys = [key for section in SCHEMA["properties"] for key in _keys((section,))]
+    assert ("synthetic_film", "films", 0, "seed") in keys
+    for at in keys:
+        prop = config_checks.key_schema(at)
+        assert {"type", "description", "default"} <= set(prop), at
 
 
 def test_the_defaults_make_a_valid_configuration() -> None:
@@ -562,6 +738,19 @@ END_TO_END = {
         lambda t: replaced("  n_error: 3\n", "", t),
         ["missing key 'n_error' in fig6_limit"],
     ),
+    # Fig. 8 and the fits ended in "math domain error", and the good Fig. 8 was deleted
+    "film of 3 frames": (
+        lambda t: replaced(
+            "  fps: 30.0\n", "  fps: 240.0\n", replaced("ion_s: 10.0", "ion_s: 0.01", t)
+        ),
+        ["config/config.yaml:", "film.duration_s = 0.01 s at film.fps = 240 frames/s gives 3"],
+    ),
+    # (edit, texts of the message, more arguments of snakemake)
+    "a value of --config": (
+        lambda t: t,
+        ["--config (command line): fig2_spectrum.n_points = '1e-4'", "--configfile"],
+        ["--config", 'fig2_spectrum={"n_points": 1e-4}'],
+    ),
 }
 
 
@@ -569,7 +758,7 @@ END_TO_END = {
 def test_snakemake_refuses_before_any_job_and_keeps_the_outputs(
     good_build: Path, tmp_path: Path, case: str
 ) -> None:
-    edit, expected = END_TO_END[case]
+    edit, expected, *args = END_TO_END[case]
     workdir = tmp_path / "copy"
     shutil.copytree(good_build, workdir, symlinks=True)  # copy2 keeps the mtimes
     before = snapshot(workdir)
@@ -577,13 +766,15 @@ def test_snakemake_refuses_before_any_job_and_keeps_the_outputs(
     text = edit(BASE_TEXT)
     (workdir / "config" / "config.yaml").write_text(text)
 
-    proc = pipeline.run_snakemake(workdir, "figures")
+    proc = pipeline.run_snakemake(workdir, "figures", *(args[0] if args else []))
 
     out = (proc.stdout + proc.stderr).strip()
     assert proc.returncode != 0
     assert len(out.splitlines()) <= MAX_OUTPUT_LINES, out
     for part in expected:
         assert part in out, out
+    if args:  # told as the command line's, not as the line of the file it overrides
+        assert "config/config.yaml:" not in out, out
     assert "Traceback" not in out
     assert snapshot(workdir) == before
 

@@ -4,22 +4,37 @@ On copies of the clean build of everything (tests/test_pipeline.py: the sources 
 temporary directory, the configuration cut down), one thing is changed and a dry run of the
 default target tells which jobs Snakemake would run: every job whose script imports the
 package after an edit of the package, only the jobs of a script (and those that read its
-outputs) after an edit of that script, nothing after a copy of the whole tree.
+outputs) after an edit of that script, nothing after a copy of the whole tree. One test per
+row of the table in README.md, "Changing a parameter and rebuilding only what changed".
 """
 
 from __future__ import annotations
 
+import os
 import shutil
+import subprocess
 from pathlib import Path
 
 import pytest
 import yaml
 
-from ci_build import FIGURE_NAMES, base_config, job_counts, shared_build, write_config
+from ci_build import (
+    FIGURE_NAMES,
+    ROOT,
+    SNAKEMAKE,
+    base_config,
+    job_counts,
+    shared_build,
+    write_config,
+)
 from test_pipeline import clean_build, in_project, shared_tmp  # noqa: F401
 
 DRAWING = {*FIGURE_NAMES, "study", "animation"}  # the jobs that use scripts/_style
 DOWNSTREAM_OF_FIGURES = {"paper", "figure_gallery", "all"}
+# the page of the report that shows the film figures (Figs. 8 and 9) and the fits
+FILM_PAGE = {"film_page"}
+# the jobs of the synthetic films: the films, their fits (one job each), the figure of fits
+FILMS = {"synthetic_film", "fit_film", "fig9_fit"} | FILM_PAGE
 
 
 def plan(workdir: Path) -> dict[str, int]:
@@ -52,6 +67,29 @@ def test_a_build_and_a_copy_of_it_leave_nothing_to_do(copy: Path) -> None:
     assert plan(copy) == {}
 
 
+def test_a_copy_run_with_the_original_package_stops_before_any_job(copy: Path) -> None:
+    """A tree copied with its .venv runs the original's package (the editable install points
+    at the original src/): the Snakefile refuses, naming both trees, before any job. The
+    project's .venv run on the copy without PYTHONPATH is exactly that case."""
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    outputs = {p: p.stat().st_mtime_ns for p in (copy / "figures").iterdir()}
+    proc = subprocess.run(
+        [SNAKEMAKE, "--cores", "1", "--forcerun", "fig1_schematic"],
+        cwd=copy,
+        env=env,
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    out = proc.stdout + proc.stderr
+    assert proc.returncode != 0, out
+    assert f"Python imports turntable from {ROOT / 'src' / 'turntable'}, not from" in out
+    assert f"belongs to {ROOT}" in out
+    assert f"`rm -rf .venv && make` in {copy}" in out
+    assert len(out.strip().splitlines()) <= 5, out
+    assert {p: p.stat().st_mtime_ns for p in (copy / "figures").iterdir()} == outputs
+
+
 @pytest.mark.parametrize("edit", ["append a comment", "add a module"])
 def test_editing_the_package_reruns_every_job_that_imports_it(
     copy: Path, everything: dict[str, int], edit: str
@@ -66,13 +104,39 @@ def test_editing_the_package_reruns_every_job_that_imports_it(
     assert plan(copy) == everything
 
 
+def test_files_an_editor_leaves_in_the_package_rerun_nothing(copy: Path) -> None:
+    """Hidden files and backups are not sources (a new module is: see above)."""
+    for name in [".spectrum.py.swp", "spectrum.py~", "#spectrum.py#", ".mypy_cache/x.py", "a.orig"]:
+        path = copy / "src" / "turntable" / name
+        path.parent.mkdir(exist_ok=True)
+        path.write_text("an editor's file\n")
+    assert plan(copy) == {}
+
+
+def test_editing_the_notebook_driver_reruns_every_job_that_runs_a_script(
+    copy: Path, everything: dict[str, int]
+) -> None:
+    """Each script of scripts/ runs through workflow/scripts/run_notebook.py: all of those
+    jobs rerun, and those that read what they wrote (claims_table, fit_film, figure_gallery),
+    which is every job."""
+    with open(copy / "workflow" / "scripts" / "run_notebook.py", "a") as f:
+        f.write("\n# an edit\n")
+    assert plan(copy) == everything
+
+
+def test_editing_a_caption_reruns_only_the_figure_page(copy: Path) -> None:
+    with open(copy / "workflow" / "report" / "fig2_spectrum.rst", "a") as f:
+        f.write("\nAn edit.\n")
+    assert set(plan(copy)) == {"figure_gallery", "all"}
+
+
 @pytest.mark.parametrize(
     ("script", "expected"),
     [
         ("scripts/fig2_spectrum.py", {"fig2_spectrum"} | DOWNSTREAM_OF_FIGURES),
         ("scripts/study_k.py", {"study_k", "study", "all"}),
         ("scripts/claims_report.py", {"claims", "claims_table", "paper", "all"}),
-        ("scripts/_style/turntable.mplstyle", DRAWING | DOWNSTREAM_OF_FIGURES),
+        ("scripts/_style/turntable.mplstyle", DRAWING | DOWNSTREAM_OF_FIGURES | FILM_PAGE),
     ],
 )
 def test_editing_a_script_reruns_only_its_jobs(copy: Path, script: str, expected: set) -> None:
@@ -88,7 +152,9 @@ def test_editing_a_script_reruns_only_its_jobs(copy: Path, script: str, expected
     ("section", "key", "expected"),
     [
         ("fig4_trajectories", "mu0", {"fig4_trajectories"} | DOWNSTREAM_OF_FIGURES),
-        ("style", "dpi", {*FIGURE_NAMES, "study"} | DOWNSTREAM_OF_FIGURES),
+        ("style", "dpi", {*FIGURE_NAMES, "study"} | DOWNSTREAM_OF_FIGURES | FILM_PAGE),
+        ("film", "noise_m", FILMS | {"fig8_measurability"} | DOWNSTREAM_OF_FIGURES),
+        ("synthetic_film", "films", FILMS | DOWNSTREAM_OF_FIGURES),
     ],
 )
 def test_editing_a_parameter_reruns_the_jobs_that_read_it(
@@ -96,6 +162,13 @@ def test_editing_a_parameter_reruns_the_jobs_that_read_it(
 ) -> None:
     config = yaml.safe_load((copy / "config" / "config.yaml").read_text())
     value = config[section][key]
-    config[section][key] = [v * 1.1 for v in value] if isinstance(value, list) else value + 1
+    if key == "films":  # another seed of the noise of the first film
+        value[0]["seed"] += 1
+    else:
+        scaled = [v * 1.1 for v in value] if isinstance(value, list) else value * 1.1
+        config[section][key] = value + 1 if isinstance(value, int) else scaled
     write_config(copy, config)
-    assert set(plan(copy)) == expected
+    planned = plan(copy)
+    assert set(planned) == expected
+    if "fit_film" in expected:  # one fit per film, each of whose data changed
+        assert planned["fit_film"] == len(config["synthetic_film"]["films"])

@@ -16,7 +16,7 @@ import pytest
 
 import turntable as tt
 from test_pipeline import clean_build, shared_tmp  # noqa: F401
-from turntable import cli, film, fit
+from turntable import cli, film, fit, fitplot
 
 ROOT = Path(__file__).resolve().parents[1]
 COMMAND = str(Path(sys.executable).with_name("turntable"))
@@ -111,8 +111,17 @@ def test_fit_of_a_film_never_seen(tmp_path: Path, model: str) -> None:
     )
     why = f"seed {entropy}: {proc.stderr}"
     assert proc.returncode == 0, why
-    assert proc.stderr == "", why
+    # warnings only, and none that says the given rate or axis is wrong (they are exact)
+    for line in proc.stderr.splitlines():
+        assert line.startswith("turntable fit: warning: "), why
+        assert "neither model fits" not in line, why
+        assert "the film prefers" not in line, why
     out = json.loads(proc.stdout)
+    assert out["warnings"] == [
+        line.removeprefix("turntable fit: warning: ") for line in proc.stderr.splitlines()
+    ]
+    assert out["data"]["synthetic"] is False  # no SYNTHETIC comment in the file
+    assert out["consistency"]["freed"] == ["omega", "axis"]
     assert out["selected"] == model, why
     name = fit.COEFFICIENT[model]
     entry = out[model]
@@ -130,12 +139,14 @@ def test_fit_of_a_film_never_seen(tmp_path: Path, model: str) -> None:
     factor = truth["mass"] * setup.omega * (1.0 if model == "slipping" else setup.radius**2)
     unit = "kg_per_s" if model == "slipping" else "kg_m2_per_s"
     assert entry[f"{name}_dim_{unit}"] == pytest.approx(entry[name] * factor)
+    lo, hi = entry[f"{name}_ci95"]
+    assert lo < entry[name] < hi
     weights = out["selection"]["akaike_weights"]
     assert weights[model] > 0.5
     assert sum(weights.values()) == pytest.approx(1.0)
     other = next(m for m in fit.MODELS if m != model)
-    assert out["selection"]["aic_difference"] == pytest.approx(
-        out[other]["aic"] - out[model]["aic"]
+    assert out["selection"]["aicc_difference"] == pytest.approx(
+        out[other]["aicc"] - out[model]["aicc"]
     )
 
 
@@ -175,6 +186,8 @@ def test_plot(tmp_path: Path) -> None:
     assert json.loads(proc.stdout)["selected"] == "rolling_resistance"
     assert figure.read_bytes().startswith(b"\x89PNG\r\n\x1a\n")
     assert [p.name for p in tmp_path.iterdir() if p.name.startswith(".")] == []
+    # readable by everyone, as the films written by turntable.film.write_film
+    assert figure.stat().st_mode & 0o777 == 0o644
 
 
 def _blocked(args: list[str]) -> subprocess.CompletedProcess:
@@ -304,7 +317,8 @@ def test_bad_option(tmp_path: Path, capsys: pytest.CaptureFixture[str], case: st
 
 
 def test_good_file_passes_the_checks(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    """The file the bad cases are variations of is accepted (five frames)."""
+    """The file the bad cases are variations of is accepted (five frames), fitted, and too
+    short for a selection: none is made, and a warning line says why (exit status 0)."""
     path = tmp_path / "film.csv"
     path.write_text(GOOD)
     proc = run_here(capsys, str(path), "--radius", "0.005", "--rpm", "33.3")
@@ -312,6 +326,12 @@ def test_good_file_passes_the_checks(tmp_path: Path, capsys: pytest.CaptureFixtu
     out = json.loads(proc.stdout)
     assert out["data"]["n_frames"] == 5
     assert math.isfinite(out["slipping"]["aic"])
+    assert out["selected"] is None
+    assert out["selection"]["decisive"] is False
+    assert "no model selected: 5 frames" in out["selection"]["reason"]
+    lines = proc.stderr.splitlines()
+    assert all(line.startswith("turntable fit: warning: ") for line in lines), lines
+    assert any("no model selected" in line for line in lines)
 
 
 # --------------------------------------------------------------------------- in the workflow
@@ -333,13 +353,42 @@ def test_workflow_fits_the_synthetic_film_with_the_command(
     data = film.read_film(workflow_build / "results/film/slipping.csv")
     assert data.t.size == round(rig.camera.duration * rig.camera.fps) + 1
     out = json.loads((workflow_build / "results/film/slipping.json").read_text())
+    assert out["data"]["synthetic"] is True  # read from the SYNTHETIC header
     assert out["selected"] == truth["model"]
+    assert out["selection"]["decisive"] is True
+    assert out["warnings"] == []
+    # the command's stderr (its warnings) goes to the job's log: none for these films
+    assert (workflow_build / "logs/fit_film/slipping.log").read_text() == ""
+    record = json.loads((workflow_build / "results/film/synthetic.json").read_text())
+    assert record["synthetic"] is True
+    assert record["films"]["slipping"]["coefficient"] == truth["coefficient"]
     assert abs(out["slipping"]["mu0"] - truth["coefficient"]) < 4 * out["slipping"]["mu0_stderr"]
     assert out["setup"]["omega_rad_s"] == pytest.approx(rig.setup.omega)
     assert out["setup"]["mass_kg"] == config["film"]["mass_kg"]
     assert out["slipping"]["mu0_dim_kg_per_s"] == pytest.approx(
         out["slipping"]["mu0"] * config["film"]["mass_kg"] * rig.setup.omega
     )
+
+
+def test_report_page_of_the_films(clean_build: Path) -> None:  # noqa: F811
+    """results/film.html, the page "What a film can tell" of the report: both figures
+    embedded, the films marked SYNTHETIC, and the numbers of the JSON files (the fitted
+    coefficient as "value ± stderr", the limit of the camera)."""
+    import re
+
+    page = (clean_build / "results" / "film.html").read_text(encoding="utf-8")
+    assert page.count("data:image/png;base64,") == 2
+    assert "What a film can tell" in page
+    out = json.loads((clean_build / "results/film/slipping.json").read_text())
+    text = fitplot.coefficient_text(out["slipping"], "mu0")
+    assert "±" in text
+    assert "<b>slipping</b> (SYNTHETIC)</td><td>slipping, mu0 = " in page
+    assert text in page
+    measure = json.loads((clean_build / "results/film/measurability.json").read_text())
+    assert f"below {measure['indistinguishable_above_mu0']:.3g}" in page
+    rules = (ROOT / "workflow" / "rules" / "film.smk").read_text()
+    assert re.search(r'report\(\s*"results/film.html",[^)]*category="What a film can tell"', rules)
+    assert '"results/film.html"' in (ROOT / "workflow" / "Snakefile").read_text()
 
 
 def test_rig_of_the_configuration() -> None:
@@ -354,3 +403,239 @@ def test_rig_of_the_configuration() -> None:
     assert rig.setup.omega == pytest.approx(2 * math.pi * (100 / 3) / 60)
     assert (rig.camera.fps, rig.camera.noise, rig.camera.duration) == (240.0, 2e-4, 10.0)
     assert list(rig.state0) == [10.0, 0.0, 0.0, 0.0, 0.0, 0.0]
+
+
+# --------------------------------------------------------------------------- warnings
+RIG = film.Setup(0.005, film.rpm_to_omega(100.0 / 3.0), 0.4)
+
+
+def _rig_file(
+    tmp_path: Path,
+    model: str,
+    coefficient: float,
+    camera: film.Camera,
+    seed: int,
+    true: film.Setup = RIG,
+    flip: bool = False,
+    header: bool = False,
+) -> Path:
+    """A film of the configured ball (put down at rest 5 cm from the axis) made with the
+    Omega and axis of ``true``; y negated if ``flip``; with the SYNTHETIC header if
+    ``header``."""
+    z0 = film.state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], true)
+    if model == "rolling_resistance":
+        z0 = tt.no_slip_state(z0, true.k)
+    data = film.simulate_film(model, coefficient, z0, true, camera, seed)
+    if flip:
+        data = film.Film(data.t, data.x, -data.y)
+    path = tmp_path / f"{model}-{seed}.csv"
+    comments = film.synthetic_header(model, coefficient, z0, true, camera, seed) if header else []
+    film.write_film(path, data, comments)
+    return path
+
+
+def _warnings(proc: subprocess.CompletedProcess) -> list[str]:
+    """The warning lines of a completed fit (exit 0, every stderr line a warning)."""
+    assert proc.returncode == 0, proc.stderr
+    lines = proc.stderr.splitlines()
+    assert all(line.startswith("turntable fit: warning: ") for line in lines), lines
+    assert "Traceback" not in proc.stderr
+    assert json.loads(proc.stdout)["warnings"] == [
+        line.removeprefix("turntable fit: warning: ") for line in lines
+    ]
+    return lines
+
+
+def test_wrong_rate_warns_and_fit_omega_recovers(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A slipping film of a turntable 0.4 % faster than --omega: with the given rate the
+    rolling model is selected, and a warning says that with Omega free the slipping model
+    is selected;
+    with --fit-omega the slipping model is selected, mu0 and Omega lie within 3 standard
+    errors of the truth, and nothing is reported."""
+    true = RIG._replace(omega=RIG.omega * 1.004)
+    path = _rig_file(tmp_path, "slipping", 3.0, film.Camera(60.0, 2e-4, 6.0), 3, true)
+    args = [str(path), "--radius", "0.005", "--omega", repr(RIG.omega)]
+    lines = _warnings(run_here(capsys, *args))
+    assert json.loads(run_here(capsys, *args).stdout)["selected"] == "rolling_resistance"
+    assert any("selects slipping" in line and "--fit-omega" in line for line in lines), lines
+    proc = run_here(capsys, *args, "--fit-omega")
+    assert _warnings(proc) == []
+    out = json.loads(proc.stdout)
+    assert out["setup"]["fit_omega"] is True
+    assert out["consistency"]["freed"] == ["axis"]
+    assert out["selected"] == "slipping"
+    entry = out["slipping"]
+    assert abs(entry["mu0"] - 3.0) < 3 * entry["mu0_stderr"]
+    assert abs(entry["omega_rad_s"] - true.omega) < 3 * entry["omega_stderr_rad_s"]
+    assert out["slipping"]["n_parameters"] == 8
+
+
+def test_clockwise_film_warns(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """A film of a clockwise turntable whose y was not negated: neither model fits (rms
+    residual far above the 0.2 mm noise), and the warning names the sign of y."""
+    path = _rig_file(tmp_path, "slipping", 3.0, film.Camera(60.0, 2e-4, 6.0), 0, flip=True)
+    proc = run_here(capsys, str(path), "--radius", "0.005", "--omega", repr(RIG.omega))
+    lines = _warnings(proc)
+    assert any("neither model fits" in line and "sign of y" in line for line in lines), lines
+    out = json.loads(proc.stdout)
+    assert out[out["selected"]]["rms_residual_m"] > 10 * 2e-4
+    assert out[out["selected"]]["residuals_white"] is False
+
+
+def test_coefficient_at_the_bound_is_a_limit(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """mu0 = 3000 filmed at 30 frames/s for 6 s: the slipping fit runs into the end of the
+    search range; the JSON gives no value but a lower limit, below the truth, and a warning
+    line says so; exit status 0."""
+    path = _rig_file(tmp_path, "slipping", 3000.0, film.Camera(30.0, 3e-4, 6.0), 1)
+    proc = run_here(capsys, str(path), "--radius", "0.005", "--omega", repr(RIG.omega))
+    lines = _warnings(proc)
+    assert any("mu0 ran into the upper end" in line for line in lines), lines
+    entry = json.loads(proc.stdout)["slipping"]
+    assert entry["mu0"] is None
+    assert entry["at_bound"] is True
+    assert entry["mu0_lower_limit"] < 3000.0
+    assert entry["mu0_search_bound"] == pytest.approx(fit.BOUNDS["slipping"][1])
+
+
+def test_time_in_milliseconds_warns(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """Times written in ms: the warning asks whether t is in seconds."""
+    data = film.read_film(_rig_file(tmp_path, "slipping", 3.0, film.Camera(60.0, 2e-4, 2.0), 0))
+    path = tmp_path / "ms.csv"
+    film.write_film(path, film.Film(1000.0 * data.t, data.x, data.y))
+    lines = _warnings(run_here(capsys, str(path), "--radius", "0.005", "--rpm", "33.3"))
+    assert any("between frames" in line and "t is in seconds" in line for line in lines), lines
+
+
+def test_weak_selection_is_not_decisive(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """15 frames at 240 frames/s, where the two motions differ by less than the noise: a
+    model is selected, "decisive": false, and a warning line gives the AICc difference."""
+    path = _rig_file(tmp_path, "slipping", 3.0, film.Camera(240.0, 2e-4, 14 / 240), 0)
+    proc = run_here(capsys, str(path), "--radius", "0.005", "--omega", repr(RIG.omega))
+    lines = _warnings(proc)
+    sel = json.loads(proc.stdout)["selection"]
+    assert sel["decisive"] is False
+    assert sel["aicc_difference"] < 10
+    assert any("is not decisive: AICc difference" in line for line in lines), lines
+
+
+def test_synthetic_films_are_marked_in_the_json(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    camera = film.Camera(30.0, 3e-4, 4.0)
+    marked = _rig_file(tmp_path, "slipping", 3.0, camera, 0, header=True)
+    assert marked.read_text().startswith("# SYNTHETIC")
+    proc = run_here(capsys, str(marked), "--radius", "0.005", "--omega", repr(RIG.omega))
+    out = json.loads(proc.stdout)
+    assert out["data"]["synthetic"] is True
+    assert "turns" not in out["data"]
+    assert out["data"]["turntable_turns"] == pytest.approx(RIG.omega * 4.0 / (2 * math.pi))
+
+
+# --------------------------------------------------------------------------- robustness
+EXTREME = {
+    "positions of 1e300 m": ("x", lambda d: (d.t, 1e300 * d.x / 0.05, d.y), []),
+    "positions of 1e-300 m": ("", lambda d: (d.t, 1e-300 * d.x, 1e-300 * d.y), []),
+    "times of 1e300 s": ("t", lambda d: (1e300 * (d.t + 1.0), d.x, d.y), []),
+    "times of 1e-200 s": ("", lambda d: (1e-200 * d.t, d.x, d.y), []),
+    "radius of 1e-300 m": ("x", lambda d: (d.t, d.x, d.y), ["--radius", "1e-300"]),
+    "rate of 1e300 rad/s": ("t", lambda d: (d.t, d.x, d.y), ["--omega", "1e300"]),
+}
+
+
+@pytest.mark.parametrize("case", list(EXTREME))
+def test_extreme_numbers(tmp_path: Path, capsys: pytest.CaptureFixture[str], case: str) -> None:
+    """Numbers far outside any experiment: either one error line naming the file, line and
+    column (exit 2; values beyond 1e100 radii, or times beyond 1e100 / Omega) or a fit with
+    warning lines only (exit 0), never a traceback or numpy's RuntimeWarning; with --plot
+    too (the JSON is written first)."""
+    column, change, options = EXTREME[case]
+    data = film.read_film(_rig_file(tmp_path, "slipping", 3.0, film.Camera(30.0, 3e-4, 2.0), 0))
+    path = tmp_path / "extreme.csv"
+    film.write_film(path, film.Film(*change(data)), digits=17)
+    given = {"--radius": "0.005", "--omega": repr(RIG.omega)}
+    given.update(zip(options[::2], options[1::2], strict=True))
+    args = [word for pair in given.items() for word in pair]
+    figure = tmp_path / "fit.png"
+    proc = run_here(capsys, str(path), *args, "--plot", str(figure))
+    assert "Traceback" not in proc.stderr
+    assert "Warning" not in proc.stderr  # RuntimeWarning, UserWarning
+    if column:
+        _check_bad(proc, [f"{path}:", f"column '{column}'", "too large for the fit"])
+    else:
+        assert proc.returncode in (0, 1), proc.stderr
+        assert all(line.startswith("turntable fit: ") for line in proc.stderr.splitlines())
+        json.loads(proc.stdout)
+
+
+def test_plot_that_cannot_be_drawn(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """If drawing fails, the JSON is already on stdout; one line on stderr, exit status 1."""
+    from turntable import fitplot
+
+    def broken(*_: object) -> None:
+        raise TypeError("unsupported format string passed to NoneType.__format__")
+
+    monkeypatch.setattr(fitplot, "plot_fit", broken)
+    path = _rig_file(tmp_path, "slipping", 3.0, film.Camera(30.0, 3e-4, 4.0), 0)
+    figure = tmp_path / "fit.png"
+    proc = run_here(capsys, str(path), "--radius", "0.005", "--rpm", "33.3", "--plot", str(figure))
+    assert proc.returncode == 1
+    assert json.loads(proc.stdout)["selected"] in fit.MODELS
+    errors = [line for line in proc.stderr.splitlines() if "error" in line]
+    assert errors == [f"turntable fit: error: --plot {figure}: unsupported format string "
+                      "passed to NoneType.__format__"]  # fmt: skip
+    assert "Traceback" not in proc.stderr
+
+
+def test_plot_draws_missing_values_and_limits(tmp_path: Path) -> None:
+    """The drawing of a JSON with None values (no finite rolling fit, no AICc difference)
+    and a coefficient reported as a limit: drawn, with the limit in the label."""
+    from turntable import fitplot
+
+    camera = film.Camera(30.0, 3e-4, 6.0)
+    data = film.read_film(_rig_file(tmp_path, "slipping", 3000.0, camera, 1))
+    out = cli._finite_json(fit.result_json(fit.fit_film(data, RIG), RIG, data))
+    assert out["slipping"]["mu0"] is None
+    out["rolling_resistance"] = {
+        key: value for key, value in out["rolling_resistance"].items() if "limit" not in key
+    }
+    out["rolling_resistance"]["state0"] = [None] * 6
+    out["rolling_resistance"]["delta"] = None
+    out["rolling_resistance"]["rms_residual_m"] = None
+    out["selection"]["aicc_difference"] = None
+    figure = tmp_path / "fit.png"
+    fitplot.plot_fit(figure, data, out)
+    assert figure.read_bytes().startswith(b"\x89PNG")
+    assert fitplot.coefficient_text(out["slipping"], "mu0").startswith("> ")
+    assert fitplot.coefficient_text(out["rolling_resistance"], "delta") == "n/a"
+
+
+def test_closed_stdout_ends_quietly(tmp_path: Path) -> None:
+    """`turntable fit ... | head -c 10`: when the reader is gone before the JSON is written,
+    the command ends without a traceback (status 1, as Python advises for SIGPIPE)."""
+    path = _rig_file(tmp_path, "slipping", 3.0, film.Camera(30.0, 3e-4, 4.0), 0)
+    proc = subprocess.Popen(
+        [COMMAND, "fit", str(path), "--radius", "0.005", "--rpm", "33.3"],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+    )
+    proc.stdout.close()  # the reader leaves before the fit is done
+    _, err = proc.communicate(timeout=120)
+    assert proc.returncode == 1
+    assert b"Traceback" not in err
+    assert b"BrokenPipe" not in err
+    shell = subprocess.run(
+        f"{COMMAND} fit {path} --radius 0.005 --rpm 33.3 | head -c 10",
+        shell=True,
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=False,
+    )
+    assert shell.stdout == '{\n  "selec'
+    assert "Traceback" not in shell.stderr

@@ -2,7 +2,7 @@
 
 The notebooks of the clean build of everything (tests/test_pipeline.py, cut-down
 configuration) are checked for what a reader needs: the job's ``snakemake`` object in the
-first cell, the docstring as text, the figures inline, no error, no warning of the kernel,
+first cell, the docstring as text, the figures inline, no error, no warning of the build,
 the same bytes from another build. One notebook is run again by hand, as a reader would: it
 draws the same figure without touching figures/. The shared build of tests/ci_build.py
 plans the whole workflow with the project's own configuration.
@@ -20,9 +20,10 @@ from pathlib import Path
 import jupytext
 import nbformat
 import pytest
+import yaml
 from nbclient import NotebookClient
 
-from ci_build import ROOT, shared_build
+from ci_build import ROOT, shared_build, write_config
 from test_pipeline import clean_build, in_project, interrupted_build, shared_tmp  # noqa: F401
 
 SCRIPTS = sorted(p.stem for p in (ROOT / "scripts").glob("*.py"))
@@ -57,7 +58,7 @@ def test_each_script_runs_in_exactly_one_rule(build: tuple[Path, dict]) -> None:
         assert len(running) == expected, name
         assert all(f"results/notebooks/{name}" in job for job in running), name
     assert "rule notebook:" not in record["plan"]
-    assert len(SCRIPTS) >= 10  # seven figures, claims report, article, study, animation
+    assert len(SCRIPTS) >= 10  # nine figures, films, claims report, article, study, animation
 
 
 def test_every_script_has_its_notebook(clean_build: Path) -> None:  # noqa: F811
@@ -110,7 +111,7 @@ def test_article_notebook_shows_what_it_wrote(clean_build: Path) -> None:  # noq
     assert "wrote paper/paper.pdf" in text  # its log
 
 
-def test_the_kernel_warns_nothing(clean_build: Path, shared_tmp: Path) -> None:  # noqa: F811
+def test_the_build_warns_nothing(clean_build: Path, shared_tmp: Path) -> None:  # noqa: F811
     record = json.loads((shared_tmp / "pipeline-clean.json").read_text())
     assert record["returncode"] == 0
     assert record["warnings"] == []
@@ -130,6 +131,61 @@ def test_notebooks_are_byte_reproducible(
         # the only difference allowed: where the scripts are, seen from the working directory
         scripts = os.path.relpath(ROOT / "scripts", other)
         assert ours == theirs.replace(repr(scripts), repr("scripts")), name
+
+
+def test_a_notebook_holds_nothing_of_the_other_sections(
+    clean_build: Path,  # noqa: F811
+    tmp_path: Path,
+) -> None:
+    """A value of another section changes no notebook but those of the jobs that read it: the
+    notebook of Fig. 2, run again after Fig. 4's parameters changed (and Fig. 4 rebuilt),
+    has the bytes it had, those a build from nothing would write."""
+    workdir = Path(shutil.copytree(clean_build, tmp_path / "w", symlinks=True))
+    fig2 = workdir / "results/notebooks/fig2_spectrum.ipynb"
+    fig4 = workdir / "results/notebooks/fig4_trajectories.ipynb"
+    before = {path: path.read_bytes() for path in (fig2, fig4)}
+    first = "".join(code_cells(json.loads(before[fig2]))[0]["source"])
+    assert "config={'fig2_spectrum': {" in first
+    assert "fig4_trajectories" not in first
+    assert "'style'" not in first
+    config = yaml.safe_load((workdir / "config/config.yaml").read_text())
+    config["fig4_trajectories"]["mu0"] = [m * 1.1 for m in config["fig4_trajectories"]["mu0"]]
+    write_config(workdir, config)
+    proc = in_project(workdir, "figures/fig4_trajectories.pdf", cores=1)  # only that job
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    assert fig4.read_bytes() != before[fig4]
+    proc = in_project(workdir, "--forcerun", "fig2_spectrum", "figures/fig2_spectrum.pdf")
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    assert "fig2_spectrum" in proc.stderr  # it did run again
+    assert fig2.read_bytes() == before[fig2]
+
+
+def test_a_kernel_writes_the_same_notebook_as_the_driver(
+    clean_build: Path,  # noqa: F811
+    tmp_path: Path,
+) -> None:
+    """The driver runs the cells in its own process (workflow/scripts/run_notebook.py); a
+    Jupyter kernel driven by nbclient, as the workflow did before, run as the workflow runs
+    it (TURNTABLE_NOTEBOOK set), writes the same bytes: outputs, counts, metadata."""
+    workdir = Path(shutil.copytree(clean_build, tmp_path / "w", symlinks=True))
+    path = workdir / "results/notebooks/fig1_schematic.ipynb"
+    saved = path.read_text()
+    nb = nbformat.reads(saved, as_version=4)
+    env = os.environ | {"TURNTABLE_NOTEBOOK": "results/notebooks/fig1_schematic.ipynb"}
+    env["PATH"] = f"{Path(sys.executable).parent}{os.pathsep}{env['PATH']}"  # this kernel
+    client = NotebookClient(
+        nb,
+        kernel_name="python3",
+        record_timing=False,
+        extra_arguments=[
+            "--HistoryManager.enabled=False",
+            "--InteractiveShell.ast_node_interactivity=none",
+        ],
+        resources={"metadata": {"path": str(workdir)}},
+    )
+    client.execute(env=env)
+    again = nbformat.writes(nb)
+    assert again + ("" if again.endswith("\n") else "\n") == saved
 
 
 def test_a_notebook_runs_again_by_itself(clean_build: Path, tmp_path: Path) -> None:  # noqa: F811

@@ -29,11 +29,23 @@ ROOT = Path(__file__).resolve().parents[1]
 # from the claims report, whose commit is that of the checkout).
 BUILT_FROM = "0123456789abcdef0123456789abcdef01234567"
 PAPER = ROOT / "paper" / "paper.typ"
-#: Figures the workflow draws whose section of the article ("What a film can tell") is not
-#: written yet. The tests below require them to be absent from the article, so that adding
-#: the section makes them fail until this set is emptied.
-NOT_YET_IN_ARTICLE = {"fig8_measurability", "fig9_fit"}
+#: Figures the workflow draws that the article does not show yet. The tests below require
+#: them to be absent from the article, so that adding one makes them fail until it is taken
+#: out of this set. (Figures 8 and 9 are in the section "What a film can tell", film.typ.)
+NOT_YET_IN_ARTICLE: set[str] = set()
 VALUES = ROOT / "paper" / "values.typ"
+#: The section "What a film can tell", included from paper.typ; its numbers are read from the
+#: results of the film rules (results/film/*.json).
+FILM = ROOT / "paper" / "film.typ"
+_INCLUDE = re.compile(r'^#include "([^"]+)"\n', re.M)
+
+
+def article_text() -> str:
+    """paper.typ with each `#include "<file>"` line replaced by that file: the article as
+    Typst typesets it, in order."""
+    text = PAPER.read_text(encoding="utf-8")
+    return _INCLUDE.sub(lambda m: (PAPER.parent / m.group(1)).read_text(encoding="utf-8"), text)
+
 
 _IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_-]*")
 _KEYWORDS = {"let", "set", "show", "import", "include"}
@@ -225,9 +237,10 @@ def test_parser_ignores_math_code_refs_and_paths(source: str) -> None:
 # The article -----------------------------------------------------------------------------
 
 
-def test_no_typed_numbers_in_the_prose() -> None:
-    found = digits_in_prose(PAPER.read_text(encoding="utf-8"))
-    assert found == [], f"numbers typed into the prose (read them from claims.json): {found}"
+@pytest.mark.parametrize("source", [PAPER, FILM], ids=lambda p: p.name)
+def test_no_typed_numbers_in_the_prose(source: Path) -> None:
+    found = digits_in_prose(source.read_text(encoding="utf-8"))
+    assert found == [], f"numbers typed into the prose (read them from the results): {found}"
 
 
 def _figures(text: str) -> list[tuple[str, str]]:
@@ -246,7 +259,7 @@ def _figures(text: str) -> list[tuple[str, str]]:
 
 
 def test_every_figure_comes_from_figures_and_names_its_script() -> None:
-    figures = _figures(PAPER.read_text(encoding="utf-8"))
+    figures = [f for f in _figures(article_text()) if f[0]]  # tables are figures too
     assert figures
     stems = []
     for path, caption in figures:
@@ -292,6 +305,10 @@ def paper_tree(clean_build: Path, tmp_path_factory: pytest.TempPathFactory) -> P
     )
     (tree / "results").mkdir()
     shutil.copy2(clean_build / "results/claims.json", tree / "results/claims.json")
+    # what the section "What a film can tell" reads (FILM_RESULTS of workflow/rules/film.smk)
+    (tree / "results" / "film").mkdir()
+    for path in (clean_build / "results" / "film").glob("*.json"):
+        shutil.copy2(path, tree / "results" / "film" / path.name)
     # As scripts/build_paper.py writes it; a made-up commit, distinct from the claims report's.
     record = provenance(ROOT) | {"git_commit": BUILT_FROM, "git_dirty": True}
     build = {"provenance": record, "repository": config["paper"]["repository"]}
@@ -336,10 +353,10 @@ def test_pdf_is_reproducible_and_carries_the_report(paper_tree: Path) -> None:
 
 def test_article_numbers_its_figures_as_their_files() -> None:
     """Figure N of the article is figures/figN_*: the figures appear in that order, in place."""
-    figures = _figures(PAPER.read_text(encoding="utf-8"))
+    figures = [f for f in _figures(article_text()) if f[0]]  # tables are figures too
     numbers = [int(re.match(r"fig(\d+)_", Path(path).stem).group(1)) for path, _ in figures]
     assert numbers == list(range(1, len(figures) + 1))
-    assert "placement:" not in PAPER.read_text(encoding="utf-8")  # no floats reordering them
+    assert "placement:" not in article_text()  # no floats reordering them
 
 
 #: Plain-text mathematics of the registry that the appendix must not show untypeset.
@@ -392,3 +409,73 @@ def test_appendix_typesets_the_registry_mathematics(paper_tree: Path) -> None:
         assert shown.endswith(".") == source.endswith("."), (shown, source)
     assert "<sub>" in page
     assert "<sup>" in page
+
+
+# The section "What a film can tell" ---------------------------------------------------------
+
+
+def test_film_section_is_included_before_the_verdicts() -> None:
+    """paper.typ includes film.typ with one line, directly before the verdicts."""
+    text = PAPER.read_text(encoding="utf-8")
+    assert text.count('#include "film.typ"') == 1
+    assert '#include "film.typ"\n= What was confirmed, refined and corrected' in text
+    film = FILM.read_text(encoding="utf-8")
+    assert film.lstrip("/ \n").split("\n")[0]  # a comment says what it is
+    for path in ("../results/film/measurability.json", "../results/film/synthetic.json"):
+        assert f'json("{path}")' in film
+    assert 'json("../results/film/" + name + ".json")' in film
+    assert "= What a film can tell" in film
+
+
+def _film_section(tree: Path) -> str:
+    """The film section compiled alone (with the article's helpers) to HTML, as text."""
+    import typst
+
+    doc = tree / "paper" / "film_only.typ"
+    # the heading the section refers to, then the section
+    doc.write_text(
+        '#set heading(numbering: "1.")\n= Slipping or rolling resistance? <sec-comparison>\n'
+        '#include "film.typ"\n',
+        encoding="utf-8",
+    )
+    page = typst.compile(str(doc), root=str(tree), format="html").decode()
+    text = " ".join(html.unescape(re.sub(r"<[^>]+>", " ", page)).split())
+    return text.replace("( ", "(").replace(" )", ")")
+
+
+def test_film_section_prints_the_numbers_of_the_results(paper_tree: Path, tmp_path: Path) -> None:
+    """The section prints what the JSON files hold: with made-up values put into them, the
+    compiled text shows those values; the films are marked synthetic, and a fit not marked
+    synthetic stops the build."""
+    tree = Path(shutil.copytree(paper_tree, tmp_path / "tree"))
+    folder = tree / "results" / "film"
+    truth = json.loads((folder / "synthetic.json").read_text())
+    name, spec = next(iter(truth["films"].items()))
+    key = {"slipping": "mu0", "rolling_resistance": "delta"}[spec["model"]]
+    real = json.loads((folder / f"{name}.json").read_text())
+    text = _film_section(tree)
+    assert "SYNTHETIC" in text
+    assert "What a film can tell" in text
+    # the numbers of the build are there, as the section formats them
+    rms = real[spec["model"]]["rms_residual_m"] * 1000
+    assert f"{rms:.2g} mm" in text, text
+    made_up = json.loads((folder / f"{name}.json").read_text())
+    entry = made_up[spec["model"]]
+    entry.update({key: 2.5, f"{key}_stderr": 0.25, f"{key}_ci95": [1.53, 4.08]})
+    entry["rms_residual_m"] = 0.000777
+    made_up["selection"]["aicc_difference"] = 43.0
+    (folder / f"{name}.json").write_text(json.dumps(made_up))
+    measure = json.loads((folder / "measurability.json").read_text())
+    measure["indistinguishable_above_mu0"] = 37.0
+    measure["reliable_relative_error"] = 0.17
+    measure["reliable_mu0_range"] = [1e-3, 6100.0]
+    (folder / "measurability.json").write_text(json.dumps(measure))
+    spec_text = _film_section(tree)
+    for shown in ("2.50 ± 0.25", "1.53 to 4.08", "0.78 mm", "(43)", "> 37", "0.17", "6100"):
+        assert shown in spec_text, (shown, spec_text)
+    made_up["data"]["synthetic"] = False
+    (folder / f"{name}.json").write_text(json.dumps(made_up))
+    import typst
+
+    with pytest.raises(typst.TypstError, match="not marked synthetic"):
+        _film_section(tree)

@@ -25,7 +25,7 @@ import matplotlib.image
 import pytest
 
 from ci_build import FIGURE_NAMES as NAMES
-from ci_build import ROOT, SNAKEMAKE, base_config, copy_sources, write_config
+from ci_build import ROOT, SNAKEMAKE, base_config, copy_env, copy_sources, write_config
 from shared_build import build_once, shared_dir
 
 OUTPUTS = sorted(f"figures/{name}.{ext}" for name in NAMES for ext in ("pdf", "png"))
@@ -39,10 +39,12 @@ PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 
 # --------------------------------------------------------------------------- utilities
 def in_project(workdir: Path, *args: str, cores: int = 2) -> subprocess.CompletedProcess:
-    """Run the workflow of the project copy in `workdir` (its own Snakefile and sources)."""
+    """Run the workflow of the project copy in `workdir` (its own Snakefile and sources, the
+    project's .venv with the copy's package: tests/ci_build.copy_env)."""
     return subprocess.run(
         [SNAKEMAKE, "--cores", str(cores), *args],
         cwd=workdir,
+        env=copy_env(workdir),
         capture_output=True,
         text=True,
         timeout=300,

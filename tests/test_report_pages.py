@@ -12,7 +12,7 @@ import pytest
 import yaml
 
 from test_pipeline import NAMES, clean_build, shared_tmp  # noqa: F401
-from turntable.claims.report import summarize, to_html
+from turntable.claims.report import html_math, summarize, to_html
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -56,6 +56,53 @@ def test_claims_page_has_one_row_per_claim_with_its_verdict() -> None:
     ) in page
     assert "<code>b.two</code> <i>(addition)</i>" in page
     assert "original paper" in page
+
+
+@pytest.mark.parametrize(
+    ("text", "html"),
+    [
+        pytest.param("mu0^-2", "μ<sub>0</sub><sup>−2</sup>", id="index-and-power"),
+        pytest.param("N > exp(2 pi) ~ 535", "N &gt; e<sup>2π</sup> ∼ 535", id="exp-2pi"),
+        pytest.param("|alpha2|/beta", "|α<sub>2</sub>|/β", id="greek"),
+        pytest.param(
+            "error 6.9e-25 <= 1e-06",
+            "error 6.9×10<sup>−25</sup> ≤ 10<sup>−6</sup>",
+            id="scientific",
+        ),
+        pytest.param(
+            "y0 = (k wy(0) + vx(0))/k",
+            "y<sub>0</sub> = (k ω<sub>y</sub>(0) + v<sub>x</sub>(0))/k",
+            id="components",
+        ),
+        pytest.param("ln N - 2 pi", "ln N − 2 π", id="minus"),
+        pytest.param("z- < 1% of z+", "z<sub>−</sub> &lt; 1% of z<sub>+</sub>", id="parts"),
+        pytest.param(
+            "mu0_dim, mu0*, sigma_g, lambda_{1,2}",
+            "μ<sub>0</sub><sup>dim</sup>, μ<sub>0</sub><sup>*</sup>, σ<sub>g</sub>, "
+            "λ<sub>1,2</sub>",
+            id="subscripts",
+        ),
+        pytest.param(
+            "spectrum.alpha1_peak, alphabet, mu",
+            "spectrum.alpha1_peak, alphabet, μ",
+            id="ids-untouched",
+        ),
+        pytest.param("a < b & c", "a &lt; b &amp; c", id="escaped"),
+    ],
+)
+def test_claims_page_typesets_the_plain_text_mathematics(text: str, html: str) -> None:
+    assert html_math(text) == html
+
+
+def test_claims_page_shows_no_plain_text_mathematics() -> None:
+    """The claim, paper's value and reproduced columns go through html_math."""
+    report = _fake_report()
+    report["claims"]["a.one"]["summary"] = "mu0 = 0.1, alpha1 > 0"
+    report["claims"]["a.one"]["paper_value"] = {"text": "N > exp(2 pi)"}
+    page = to_html(report)
+    for ascii_math in ("mu0", "alpha1", "exp(2 pi)"):
+        assert ascii_math not in page
+    assert "μ<sub>0</sub> = 0.1, α<sub>1</sub> &gt; 0" in page
 
 
 def test_claims_page_is_in_the_report() -> None:

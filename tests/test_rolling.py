@@ -1,9 +1,10 @@
 """The rolling-resistance comparison model (`turntable.rolling`).
 
 References: eigenvalues and matrix exponential at 50 digits of the 4x4 matrix
-read off the constrained 3-D Newton-Euler equations
-(`turntable.claims._reference_rolling`), and a direct numerical integration of
-those equations (`rolling.newton_euler`, DOP853).
+read off the constrained 3-D Newton-Euler equations (`turntable.reference`:
+``rolling_spectrum``, ``rolling_solution``, ``rolling_equal_decay_delta``, here
+under their short names ``ref.spectrum``, ...), and a direct numerical
+integration of those equations (`rolling.newton_euler`, DOP853).
 """
 
 from __future__ import annotations
@@ -14,7 +15,7 @@ from numpy.testing import assert_allclose
 
 import turntable as tt
 from turntable import rolling
-from turntable.claims import _reference_rolling as ref
+from turntable.reference import rolling as ref
 
 DELTAS = [1e-8, 1e-5, 1e-2, 0.3, 1.0, 30.0, 1e4]
 KS = [
@@ -147,24 +148,36 @@ def test_slip_is_rejected_with_a_message_naming_it() -> None:
 
 
 @pytest.mark.parametrize(
-    "args",
+    ("args", "name"),
     [
-        pytest.param((Z_ROLL, [0.0, 1.0], 0.0, 0.4), id="delta=0"),
-        pytest.param((Z_ROLL, [0.0, 1.0], np.nan, 0.4), id="delta=nan"),
-        pytest.param((Z_ROLL, [0.0, 1.0], 0.1, -1.0), id="k<0"),
-        pytest.param((Z_ROLL, [0.0, -1.0], 0.1, 0.4), id="t<0"),
-        pytest.param((Z_ROLL[:5], [0.0, 1.0], 0.1, 0.4), id="short-state"),
-        pytest.param((Z_ROLL, [0.0, 1e6], 1.0, 0.4), id="overflow"),
+        pytest.param((Z_ROLL, [0.0, 1.0], 0.0, 0.4), "delta", id="delta=0"),
+        pytest.param((Z_ROLL, [0.0, 1.0], np.nan, 0.4), "delta", id="delta=nan"),
+        pytest.param((Z_ROLL, [0.0, 1.0], 0.1, -1.0), "k", id="k<0"),
+        pytest.param((Z_ROLL, [0.0, -1.0], 0.1, 0.4), "t", id="t<0"),
+        pytest.param((Z_ROLL[:5], [0.0, 1.0], 0.1, 0.4), "z0", id="short-state"),
+        pytest.param((Z_ROLL, [0.0, 1e6], 1.0, 0.4), "t", id="overflow"),
     ],
 )
-def test_bad_input(args: tuple) -> None:
-    with pytest.raises(ValueError, match=r"delta|k|t|z0"):
+def test_bad_input(args: tuple, name: str) -> None:
+    with pytest.raises(ValueError, match=rf"^{name}\b"):
         rolling.solve(*args)
 
 
 def test_overflow_message_names_largest_time() -> None:
-    with pytest.raises(ValueError, match=r"t must be <= \d"):
+    """In the package's format (`turntable.solve`): the largest t, with 17 digits."""
+    with pytest.raises(ValueError, match=r"^t must be at most (\S+), the largest time") as info:
         rolling.solve(Z_ROLL, [0.0, 1e6], 1.0, 0.4)
+    named = str(info.value).split()[5].rstrip(",")  # "t must be at most <t_max>, ..."
+    assert named == f"{float(named):.17g}"
+    assert float(named) < 1e6
+    assert str(info.value).endswith("got max(t) = 1000000")
+
+
+def test_zero_state_is_zero_for_ever() -> None:
+    """At rest on the axis: z = 0 at every t, however large (no overflow error)."""
+    z = rolling.solve(np.zeros(6), [0.0, 1e8], 0.1, 0.4)
+    assert np.all(z == 0.0)
+    assert z.shape == (2, 6)
 
 
 @pytest.mark.parametrize("mu0", [1e-3, 0.1, 1.0, 10.0, 1e4], ids=lambda m: f"mu0={m:g}")
@@ -188,7 +201,7 @@ def test_equal_power_delta_large_friction_asymptote() -> None:
     assert_allclose(rolling.equal_power_delta(1e8, k) * 1e8, k**4 / (k + 1) ** 2, rtol=1e-7)
 
 
-@pytest.mark.parametrize("mu0", [1e-4, 0.1, 1.0, 100.0], ids=lambda m: f"mu0={m:g}")
+@pytest.mark.parametrize("mu0", [1e-100, 1e-20, 1e-4, 0.1, 1.0, 100.0], ids=lambda m: f"mu0={m:g}")
 def test_equal_decay_delta(mu0: float) -> None:
     k = 0.4
     d = float(rolling.equal_decay_delta(mu0, k))
@@ -222,6 +235,30 @@ def test_equal_power_delta_small_friction_limit() -> None:
     """As mu0 -> 0, lambda_+ ~ sqrt(i mu0), so delta_P -> k^2."""
     for k in (0.05, 0.4, 1.0):
         assert_allclose(rolling.equal_power_delta(1e-12, k), k**2, rtol=5e-5)  # O(sqrt(mu0) / k)
+
+
+@pytest.mark.parametrize("k", KS)
+@pytest.mark.parametrize("mu0", [1e-100, 1e-200, 1e-300], ids=lambda m: f"mu0={m:g}")
+def test_matched_deltas_at_very_small_friction(mu0: float, k: float) -> None:
+    """Far below 1e-12 the matched coefficients are their leading terms to rounding.
+
+    delta_P = k^2 (1 + O(sqrt(mu0) / k)) and delta_c = k sqrt(mu0 / 2) (1 + O(sqrt(mu0) / k))
+    (|sigma_c| = delta / k (1 - O(delta)), |alpha2| = sqrt(mu0 / 2) + O(mu0 / k)): at
+    mu0 <= 1e-100 the corrections are below 1e-48, so both must equal the leading term to
+    a few units in the last place (no overflow to inf, no failed bracket).
+    """
+    with np.errstate(over="raise", invalid="raise", divide="raise"):
+        power = rolling.equal_power_delta(mu0, k)
+        decay = rolling.equal_decay_delta(mu0, k)
+    assert_allclose(power, k**2, rtol=1e-14)
+    assert_allclose(decay, k * np.sqrt(mu0 / 2.0), rtol=1e-14)
+
+
+@pytest.mark.parametrize("k", KS)
+def test_equal_power_delta_at_very_large_friction(k: float) -> None:
+    """delta_P = k^4 / (mu0 (k + 1)^2) (1 + O(1 / mu0)), here to rounding."""
+    for mu0 in (1e100, 1e300):
+        assert_allclose(rolling.equal_power_delta(mu0, k) * mu0, k**4 / (k + 1) ** 2, rtol=1e-14)
 
 
 def test_matched_delta() -> None:

@@ -38,7 +38,7 @@ OWN_TESTS = (
     "test_spectrum.py",
     "test_solution.py",
     "test_model.py",
-    "test_limit.py",
+    "test_large_friction_limit.py",
     "test_limits.py",
     "test_validation.py",
     "test_rolling.py",
@@ -51,6 +51,9 @@ STUDY_KEYWORD = "not slurm"
 
 #: Tests of the claims registry.
 CLAIMS_TESTS = ("test_claims.py",)
+
+#: The test of the comparison.rolling_resistance claim alone (its expected verdict).
+ROLLING_CLAIM = "test_claim_has_its_expected_verdict and rolling_resistance"
 
 #: Tests of the fit of a film.
 FIT_TESTS = ("test_fit.py",)
@@ -221,6 +224,91 @@ MUTANTS = [
         "spiral",
     ),
     Mutant(
+        "spiral-growth-tolerance",
+        "only the growth-rate tolerance of the trajectory.spiral check loosened (1e-6 -> 1)",
+        (
+            (
+                "claims/_checks_solution.py",
+                '"max_growth_rate_error_rel": 1e-6,',
+                '"max_growth_rate_error_rel": 1.0,',
+                1,
+            ),
+        ),
+        CLAIMS_TESTS,
+        "spiral",
+    ),
+    Mutant(
+        "spiral-angular-tolerance",
+        "only the angular-rate tolerance of the trajectory.spiral check loosened (1e-9 -> 1e-3)",
+        (
+            (
+                "claims/_checks_solution.py",
+                '"max_angular_rate_error_rel": 1e-9,',
+                '"max_angular_rate_error_rel": 1e-3,',
+                1,
+            ),
+        ),
+        CLAIMS_TESTS,
+        "spiral",
+    ),
+    Mutant(
+        "focus-bound-loosened",
+        "spectrum.unstable_focus accepts alpha1 > -1 instead of alpha1 > 0",
+        (
+            (
+                "claims/_checks_spectrum.py",
+                '"min_alpha1": {">": 0.0},',
+                '"min_alpha1": {">": -1.0},',
+                1,
+            ),
+        ),
+        CLAIMS_TESTS,
+        "unstable_focus",
+    ),
+    Mutant(
+        "untwisting-per-turn-any",
+        "trajectory.untwisting_slows: growth per turn decreasing somewhere instead of everywhere",
+        (
+            (
+                "claims/_checks_solution.py",
+                "per_turn_monotone and bool(np.all(np.diff(per_turn) < 0))",
+                "per_turn_monotone and bool(np.any(np.diff(per_turn) < 0))",
+                1,
+            ),
+        ),
+        CLAIMS_TESTS,
+        "untwisting_slows",
+    ),
+    Mutant(
+        "damping-ratio-bound-half",
+        "solution.damping_ratio accepts |alpha2|/beta > 1/2 instead of > 1",
+        (
+            (
+                "claims/_checks_solution.py",
+                '"min_ratio_alpha2_over_beta": {">": 1.0},',
+                '"min_ratio_alpha2_over_beta": {">": 0.5},',
+                1,
+            ),
+        ),
+        CLAIMS_TESTS,
+        "damping_ratio",
+    ),
+    Mutant(
+        "kernel-dimensional-radius",
+        "spectrum.kernel: slip of the dimensional equations without the radius, "
+        "u = v + gamma x w - Omega gamma x r (spin Omega instead of Omega/R)",
+        (
+            (
+                "claims/_checks_spectrum.py",
+                "u = v + radius * np.cross(gamma, w) - omega * np.cross(gamma, r)",
+                "u = v + np.cross(gamma, w) - omega * np.cross(gamma, r)",
+                1,
+            ),
+        ),
+        CLAIMS_TESTS,
+        "kernel",
+    ),
+    Mutant(
         "no-slip-torque-sign",
         "the contact force of rolling without slipping turns the ball the wrong way "
         "(claims reference of intro.no_slip_motion and limit.realization)",
@@ -302,8 +390,8 @@ MUTANTS = [
     ),
     Mutant(
         "equal-power-ratio",
-        "(k u) instead of ((k + 1) u): x = k alpha1 in equal_power_delta",
-        (("rolling.py", "x = (k + 1.0) * sp.alpha1", "x = k * sp.alpha1", 1),),
+        "(k u) instead of ((k + 1) u): x = k alpha1 (alpha1 = beta tan) in equal_power_delta",
+        (("rolling.py", "x = (k + 1.0) * sp.beta * tan", "x = k * sp.beta * tan", 1),),
     ),
     Mutant(
         "comparison-swap",
@@ -317,6 +405,38 @@ MUTANTS = [
             ),
         ),
     ),
+    # The rolling model through the claims registry: comparison.rolling_resistance must
+    # notice a wrong rolling model on its own (its references and the 3-D integration).
+    Mutant(
+        "rolling-claim-torque-sign",
+        "the rolling-resistance moment drives the spin (+delta w_h) in the 3-D equations "
+        "(killed by the comparison.rolling_resistance claim: solve against the integration)",
+        (
+            (
+                "rolling.py",
+                "return -delta * np.array([w[0], w[1], 0.0])",
+                "return delta * np.array([w[0], w[1], 0.0])",
+                1,
+            ),
+        ),
+        CLAIMS_TESTS,
+        ROLLING_CLAIM,
+    ),
+    Mutant(
+        "rolling-claim-centre-decay",
+        "sigma_c = -(delta + p) / (2 (k + 2)) instead of / (2 (k + 1)) (killed by the "
+        "comparison.rolling_resistance claim: spectrum against 50 digits)",
+        (
+            (
+                "rolling.py",
+                "sigma_c = -(delta + p) / (2.0 * (k + 1.0))",
+                "sigma_c = -(delta + p) / (2.0 * (k + 2.0))",
+                1,
+            ),
+        ),
+        CLAIMS_TESTS,
+        ROLLING_CLAIM,
+    ),
     Mutant(
         "fit-coefficient-column",
         "the column d r / d ln c of the fit's Jacobian twice too large (standard errors halved)",
@@ -325,12 +445,12 @@ MUTANTS = [
     ),
     Mutant(
         "fit-no-nuisance",
-        "standard error of ln c without projecting out the initial state",
+        "standard error of a parameter without projecting out the others (the initial state)",
         (
             (
                 "fit.py",
-                "norm = float(np.linalg.norm(j_c - j_state @ coef))",
-                "norm = float(np.linalg.norm(j_c))",
+                "norm = float(np.linalg.norm(j_i - rest @ coef))",
+                "norm = float(np.linalg.norm(j_i))",
                 1,
             ),
         ),
@@ -365,7 +485,7 @@ MUTANTS = [
     Mutant(
         "fit-expected-aic",
         "expected AIC difference without the penalty of the two extra parameters",
-        (("fit.py", "/ (n - p_s)) - 2.0 * q,", "/ (n - p_s)) - q,", 1),),
+        (("fit.py", "d = 2.0 * q + 2.0 * k_s", "d = q + 2.0 * k_s", 1),),
         FIT_TESTS,
     ),
 ]

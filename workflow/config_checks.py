@@ -20,7 +20,17 @@ workflow/schemas/config.schema.yaml and by naming conventions, not by a list of 
   friction coefficient;
 - the ``claims`` section is checked against the package's schema of the claims parameters
   (src/turntable/claims/params.schema.yaml, which `turntable.claims.resolve_params` uses
-  too); importing `turntable.claims` itself would cost every Snakemake run 1.5 s.
+  too); importing `turntable.claims` itself would cost every Snakemake run 1.5 s;
+- the film of section ``film`` has enough frames for the fits of ``turntable fit`` and
+  Fig. 8 (`MIN_FRAMES`), not so many that they exhaust the memory (`MAX_FRAMES`), and ends
+  where the synthetic films and the motions of Fig. 8 are representable in doubles;
+- the ball of the animation stays within its panels' reach (`animation_problems`).
+
+A value given on Snakemake's command line (``--config``), told by comparing the merged
+configuration with what the files give, is named as such instead of by a line of a file.
+A configuration that passed, unchanged, is not checked again (`CheckRecord`), so that a
+no-op ``snakemake`` imports neither jsonschema nor the solution; jsonschema is imported
+only where it is used.
 
 Run as a script, ``python workflow/config_checks.py FILE...`` checks that each file exists
 and is a YAML mapping: Snakemake reads a ``--configfile`` before the Snakefile, and then
@@ -32,21 +42,24 @@ from __future__ import annotations
 
 import datetime
 import difflib
+import hashlib
 import json
 import math
 import os
 import re
 import sys
+import sysconfig
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import jsonschema
 import yaml
-from referencing import Registry, Resource
-from referencing.jsonschema import DRAFT202012
+
+if TYPE_CHECKING:  # imported where used: a run whose configuration passed before
+    import jsonschema  # (see `CheckRecord`) needs neither
+    from referencing import Registry, Resource
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -55,6 +68,29 @@ SCHEMA = ROOT / "workflow" / "schemas" / "config.schema.yaml"
 
 #: Problems listed in full; beyond, the message says how many more there are.
 MAX_PROBLEMS = 5
+
+#: Where a value given with Snakemake's ``--config`` is said to come from.
+COMMAND_LINE = "--config (command line)"
+
+#: Parameters of the larger model that `turntable fit` fits to a film: the six components
+#: of the slipping ball's initial state and its coefficient (`turntable.fit.n_parameters`;
+#: tests/test_config_errors.py checks that they agree).
+FIT_PARAMETERS = 7
+
+#: Fewest frames the film of section ``film`` may have: two per parameter of the larger fit,
+#: its noise variance counted as AIC counts it, 2 (7 + 1) = 16. The fits alone need only
+#: more coordinates (two per frame) than parameters, 4 frames; Fig. 8 needs residual degrees
+#: of freedom 2 n - 7 > 0 (its F test and expected AIC difference take their logarithm: the
+#: 3 frames of 0.01 s at 240 frames/s end in "math domain error"), and a selection by AICc
+#: some more (`turntable.fit` may require its own minimum; tests/test_config_errors.py
+#: checks that this one is not below it). With 16 frames the 32 coordinates leave 25
+#: degrees of freedom, over three per parameter: the estimated noise (relative error about
+#: 1 / sqrt(2 * 25) = 14 %) and the standard errors drawn from it mean something.
+MIN_FRAMES = 2 * (FIT_PARAMETERS + 1)
+
+#: Most frames: a fit holds its Jacobian, 2 n x 7 doubles (110 MB at 10^6 frames), and
+#: evaluates the solution at every frame up to 400 times; Fig. 8 fits every value of its grid.
+MAX_FRAMES = 10**6
 
 #: Log-spaced values of mu0 per decade at which a [low, high] range of mu0 is checked
 #: against turntable.max_time, besides the peak of alpha1 when it lies inside the range.
@@ -120,26 +156,56 @@ def _shown(path: str | os.PathLike[str]) -> str:
         return str(p)
 
 
+def merge(config: dict[str, Any], update: Mapping[str, Any]) -> dict[str, Any]:
+    """``config`` updated with ``update``, sections merged key by key, as Snakemake merges
+    its configuration files and ``--config`` (`snakemake.utils.update_config`)."""
+    for key, value in update.items():
+        if isinstance(value, Mapping):
+            inner = config.get(key)
+            config[key] = merge(inner if isinstance(inner, dict) else {}, value)
+        else:
+            config[key] = value
+    return config
+
+
+def _differ(a: Any, b: Any) -> bool:
+    """Whether two configuration values differ, 400 and 400.0 or 1 and true included."""
+    if isinstance(a, Mapping) and isinstance(b, Mapping):
+        return a.keys() != b.keys() or any(_differ(a[k], b[k]) for k in a)
+    if isinstance(a, list) and isinstance(b, list):
+        return len(a) != len(b) or any(_differ(x, y) for x, y in zip(a, b, strict=True))
+    return type(a) is not type(b) or (a != b and not (a != a and b != b))  # NaN is NaN
+
+
 class Sources:
     """Where each key of the merged configuration was written: file and line.
 
     ``files`` in the order Snakemake merges them (a later file overrides an earlier one).
-    Reading them also finds keys given twice in one file.
+    Reading them also finds keys given twice in one file, and what the files give together
+    (``merged``), so that a value that differs was given on the command line (``--config``).
     """
 
     def __init__(self, files: Sequence[str | os.PathLike[str]]) -> None:
         self.files = [_shown(f) for f in files]
         self.lines: list[dict[KeyPath, int]] = []
         self.duplicates: list[tuple[tuple[int, int], str]] = []
+        self.merged: dict[str, Any] = {}
         for index, f in enumerate(files):
             self.lines.append(self._read(index, f))
 
     def _read(self, index: int, path: str | os.PathLike[str]) -> dict[KeyPath, int]:
         lines: dict[KeyPath, int] = {}
         try:
-            root = yaml.compose(Path(path).read_text(encoding="utf-8"), Loader=yaml.SafeLoader)
+            loader = yaml.FullLoader(Path(path).read_text(encoding="utf-8"))  # as Snakemake
+            try:
+                root = loader.get_single_node()
+                data = loader.construct_document(root) if root is not None else None
+            finally:
+                loader.dispose()
         except (OSError, UnicodeDecodeError, yaml.YAMLError):
             return lines
+        if isinstance(data, Mapping):
+            merge(self.merged, data)
 
         def walk(node: yaml.Node, at: KeyPath) -> None:
             if isinstance(node, yaml.MappingNode):
@@ -164,6 +230,21 @@ class Sources:
         if root is not None:
             walk(root, ())
         return lines
+
+    def from_command_line(self, config: Mapping[str, Any]) -> list[KeyPath]:
+        """The keys whose value in ``config`` is not what the files give: ``--config``'s."""
+
+        def walk(value: Any, given: Any, at: KeyPath) -> Iterator[KeyPath]:
+            if isinstance(value, Mapping) and isinstance(given, Mapping):
+                for key, sub in value.items():
+                    if key not in given:
+                        yield (*at, key)
+                    else:
+                        yield from walk(sub, given[key], (*at, key))
+            elif _differ(value, given):
+                yield at
+
+        return list(walk(config, self.merged, ()))
 
     def locate(self, at: KeyPath) -> tuple[tuple[int, int], str]:
         """Sort key and ``file:line`` of ``at``, or of the nearest key around it.
@@ -191,18 +272,22 @@ def _is_finite_number(_checker: Any, value: Any) -> bool:
     return math.isfinite(value)
 
 
-#: Draft 2020-12 with an integer that is an int and a number that is finite.
-Validator = jsonschema.validators.extend(
-    jsonschema.Draft202012Validator,
-    type_checker=jsonschema.Draft202012Validator.TYPE_CHECKER.redefine_many(
-        {"integer": _is_int, "number": _is_finite_number}
-    ),
-)
+@cache
+def validator_class() -> Any:
+    """Draft 2020-12 with an integer that is an int and a number that is finite."""
+    import jsonschema
+
+    return jsonschema.validators.extend(
+        jsonschema.Draft202012Validator,
+        type_checker=jsonschema.Draft202012Validator.TYPE_CHECKER.redefine_many(
+            {"integer": _is_int, "number": _is_finite_number}
+        ),
+    )
 
 
 def _read_schema(path: Path) -> dict[str, Any]:
     schema: dict[str, Any] = yaml.safe_load(path.read_text(encoding="utf-8"))
-    # Without "$schema", jsonschema keeps `Validator` (and its types) inside this schema
+    # Without "$schema", jsonschema keeps `validator_class()` (and its types) inside this schema
     # instead of switching to the stock validator of the dialect the keyword names.
     if schema.pop("$schema", DIALECT) != DIALECT:
         raise ValueError(f"{path}: expected a JSON Schema of draft 2020-12")
@@ -212,6 +297,9 @@ def _read_schema(path: Path) -> dict[str, Any]:
 @cache
 def _retrieve(uri: str) -> Resource:
     """Load a schema that another one refers to by a relative file path."""
+    from referencing import Resource
+    from referencing.jsonschema import DRAFT202012
+
     schema = _read_schema(Path(uri.removeprefix("file://")))
     return Resource.from_contents(schema, default_specification=DRAFT202012)
 
@@ -219,6 +307,9 @@ def _retrieve(uri: str) -> Resource:
 @cache
 def load_schema(path: str | os.PathLike[str] = SCHEMA) -> tuple[dict[str, Any], Registry]:
     """The schema at ``path`` (with its file address as ``$id``) and its references."""
+    from referencing import Registry, Resource
+    from referencing.jsonschema import DRAFT202012
+
     schema = _read_schema(Path(path))
     schema["$id"] = Path(path).resolve().as_uri()
     resource = Resource.from_contents(schema, default_specification=DRAFT202012)
@@ -411,7 +502,7 @@ def schema_problems(
     """Problems of type, bounds, missing and unknown keys against the schema."""
     schema, registry = load_schema(schema_path)
     problems: dict[Problem, None] = {}
-    for err in Validator(schema, registry=registry).iter_errors(config):
+    for err in validator_class()(schema, registry=registry).iter_errors(config):
         problems.update(dict.fromkeys(_schema_problems(err, schema_path)))
     return list(problems)
 
@@ -464,6 +555,40 @@ def name_problems(config: Mapping[str, Any]) -> list[Problem]:
                     )
                 seen.add(entry["name"])
     return found
+
+
+def film_frames(fps: float, duration: float) -> int:
+    """Number of frames of a film, as `turntable.film.frame_times` counts them."""
+    return math.floor(duration * fps * (1.0 + 1e-12)) + 1
+
+
+def film_problems(config: Mapping[str, Any]) -> list[Problem]:
+    """The film of section ``film`` has from `MIN_FRAMES` to `MAX_FRAMES` frames."""
+    section = config.get("film")
+    if not isinstance(section, Mapping):
+        return []
+    fps, duration = section["fps"], section["duration_s"]
+    n = film_frames(fps, duration)
+    at: KeyPath = ("film", "duration_s")
+    given = f"film.duration_s = {duration:g} s at film.fps = {fps:g} frames/s gives {n} frames"
+    if n < MIN_FRAMES:
+        return [
+            Problem(
+                at,
+                f"{given}, too few to fit both models of turntable fit (7 and 5 parameters); "
+                f"expected at least {MIN_FRAMES} frames: duration_s >= "
+                f"{(MIN_FRAMES - 1) / fps:.6g}",
+            )
+        ]
+    if n > MAX_FRAMES:
+        return [
+            Problem(
+                at,
+                f"{given}; expected at most {MAX_FRAMES} frames (each fit holds 14 numbers "
+                f"per frame): duration_s <= {(MAX_FRAMES - 1) / fps:.6g}",
+            )
+        ]
+    return []
 
 
 def _turntable() -> Any:
@@ -585,6 +710,114 @@ def _first_unrepresentable(
     return None
 
 
+def film_time_problems(config: Mapping[str, Any]) -> list[Problem]:
+    """The film of section ``film`` ends where every motion it is compared with is
+    representable: each synthetic film (section ``synthetic_film``), and, over the range of
+    Fig. 8 (section ``fig8_measurability``), the slipping ball for each mu0 and the rolling
+    ball for delta = mu0, all from the film's start (the rolling ball's on the no-slip
+    constraint), until t Omega = Omega (n - 1) / fps."""
+    section = config.get("film")
+    if not isinstance(section, Mapping):
+        return []
+    tt = _turntable()
+    from turntable import film
+
+    try:
+        rig = film.rig_from_config(section)
+    except ValueError as exc:
+        return [Problem(("film",), f"film: {exc}")]
+    n = film_frames(section["fps"], section["duration_s"])
+    omega, k = rig.setup.omega, rig.setup.k
+    end = omega * (n - 1) / section["fps"]
+    start = {"slipping": rig.state0, "rolling_resistance": tt.no_slip_state(rig.state0, k)}
+    # (model, coefficients, what they are)
+    cases = [
+        (spec["model"], [spec["coefficient"]], f"synthetic film '{spec['name']}'")
+        for spec in config.get("synthetic_film", {}).get("films", [])
+    ]
+    fig8 = config.get("fig8_measurability")
+    if isinstance(fig8, Mapping):
+        low, high = fig8["mu0_range"]
+        cases += [
+            ("slipping", _range_samples(tt, low, high, k, end), "Fig. 8"),
+            ("rolling_resistance", _rolling_samples(tt, low, high, k, end), "Fig. 8"),
+        ]
+    shown = (
+        f"film.duration_s = {section['duration_s']:g} s at film.rpm = {section['rpm']:g} "
+        f"ends at t Omega = {end:.6g}"
+    )
+    for model, coefficients, what in cases:
+        z0 = start[model]
+        for c in coefficients:
+            if model == "slipping":
+                limit = float(tt.max_time(c, k, z0))
+                if end > limit:
+                    return [
+                        Problem(
+                            ("film", "duration_s"),
+                            f"{shown}, after t Omega = {limit:.6g}, the last time at which the "
+                            f"slipping ball of {what} (mu0 = {c:.6g}) is representable in "
+                            f"doubles (turntable.max_time); expected duration_s <= "
+                            f"{limit / omega:.6g}",
+                        )
+                    ]
+            else:
+                try:
+                    tt.rolling.solve(z0, [end], c, k)
+                except ValueError as exc:
+                    return [
+                        Problem(
+                            ("film", "duration_s"),
+                            f"{shown}, too late for the rolling ball of {what} "
+                            f"(delta = {c:.6g}, Omega = {omega:.6g} rad/s): {exc}",
+                        )
+                    ]
+    return []
+
+
+def _rolling_samples(tt: Any, low: float, high: float, k: float, end: float) -> list[float]:
+    """Values of delta in [low, high] at which the rolling ball might not be representable
+    at ``end``: a log grid, fastest growth first, those whose growth alone reaches half the
+    exponent range of a double (as `_range_samples` for the slipping ball)."""
+    import numpy as np
+
+    n = max(2, math.ceil(RANGE_SAMPLES_PER_DECADE * math.log10(high / low)) + 1)
+    grid = np.geomspace(low, high, n)
+    rate = np.asarray(tt.rolling.growth_rate(grid, k), dtype=float)
+    order = np.argsort(-rate)
+    half = 0.5 * math.log(sys.float_info.max)
+    return [float(d) for d in grid[order][rate[order] * end > half]]
+
+
+def animation_problems(config: Mapping[str, Any]) -> list[Problem]:
+    """The ball of the animation (section ``animation``) is drawn at least two pixels wide:
+    the panels show a disc of half-width `extent` = 1.5 R + the farthest the centre goes
+    from the axis, both balls, over the frames, in ``size`` pixels, so that extent must be
+    at most size / 2 (the ball's radius R then at least a pixel). Beyond, the ball is not
+    seen, and the panel draws a ring every 2 R: a ball that grows to 1e30 R never ends."""
+    a = config.get("animation")
+    if not isinstance(a, Mapping):
+        return []
+    tt = _turntable()
+    import numpy as np
+
+    t = np.linspace(0.0, a["t_end"], (a["n_frames"] - 1) * a["substeps"] + 1)
+    paths = [tt.solve(a["state"], t, a["mu0"], a["k"]), tt.nonholonomic(a["state"], t, a["k"])]
+    extent = 1.5 + max(float(np.max(np.hypot(z[:, 0], z[:, 1]))) for z in paths)
+    if extent <= a["size"] / 2:
+        return []
+    return [
+        Problem(
+            ("animation", "t_end"),
+            f"animation.t_end = {a['t_end']:g}: by then the ball goes {extent - 1.5:.4g} R "
+            f"from the axis, so that in panels of animation.size = {a['size']} pixels it "
+            f"would be drawn {a['size'] / extent:.2g} pixels wide; expected at most "
+            f"size / 2 - 1.5 = {a['size'] / 2 - 1.5:g} R from the axis (an earlier t_end, a "
+            "state nearer the axis, or a larger size)",
+        )
+    ]
+
+
 # --------------------------------------------------------------------------- all checks
 def problems(
     config: Mapping[str, Any], schema_path: str | os.PathLike[str] = SCHEMA
@@ -596,7 +829,9 @@ def problems(
         lambda: schema_problems(config, schema_path),
         lambda: order_problems(config),
         lambda: name_problems(config),
+        lambda: film_problems(config),
         lambda: solution_time_problems(config, schema_path),
+        lambda: film_time_problems(config) + animation_problems(config),
     ):
         found = stage()
         if found:
@@ -625,20 +860,123 @@ def config_problem(
     -------
     str or None
         A header and one line per problem, sorted by file and line, at most
-        `MAX_PROBLEMS` of them.
+        `MAX_PROBLEMS` of them. A value that is not what the files give came from
+        Snakemake's ``--config``, and is told as such, after the files.
     """
     existing = [f for f in files if Path(f).is_file()]
     sources = Sources(existing)
     lines = list(sources.duplicates)
+    given = sources.from_command_line(config)
     for problem in problems(config, schema_path):
-        order, where = sources.locate(problem.at)
-        lines.append((order, f"{where}: {problem.text}"))
+        text = problem.text
+        if any(problem.at[: len(at)] == at for at in given):
+            order, where = (len(existing), 0), COMMAND_LINE
+            if " is text" in text:  # --config reads the values inside {...} as text
+                text += (
+                    " (--config reads the values of a section as text: write them in a "
+                    "file and pass it with --configfile)"
+                )
+        else:
+            order, where = sources.locate(problem.at)
+        lines.append((order, f"{where}: {text}"))
     if not lines:
         return None
     texts = [text for _, text in sorted(lines, key=lambda x: x[0])]
     more = len(texts) - MAX_PROBLEMS
     shown = texts[:MAX_PROBLEMS] + ([f"(and {more} more)"] if more > 0 else [])
     return "\n".join([HEADER, *shown])
+
+
+# --------------------------------------------------------------------------- checked before
+#: Where the working directory remembers the last configuration that passed every check
+#: (in Snakemake's own folder, which `make clean` removes): see `CheckRecord`.
+RECORD = Path(".snakemake") / "config_checks.ok"
+
+
+def _what_the_checks_read() -> Iterator[Path]:
+    """The files whose contents decide the checks besides the configuration: this module,
+    the schemas, and the package whose solution bounds the time spans."""
+    yield Path(__file__).resolve()
+    yield from sorted((ROOT / "workflow" / "schemas").glob("*.yaml"))
+    package = ROOT / "src" / "turntable"
+    yield from sorted(p for p in package.rglob("*") if p.suffix in (".py", ".yaml"))
+
+
+class CheckRecord:
+    """Skips the checks of a configuration that passed them before, unchanged.
+
+    A no-op ``snakemake`` would otherwise spend a tenth of its time on them (importing
+    jsonschema, validating, evaluating the solution's bounds). The record holds two
+    SHA-256 digests: of the configuration files' bytes together with everything else the
+    checks read (this module, the schemas, the package's sources, the Python version and
+    the state of the installed packages, through the modification time of site-packages,
+    which any install or removal changes), and of the same with the merged configuration
+    (``--config`` included). Only a configuration that passed is recorded; any change of
+    any of those inputs misses the record and runs every check again.
+    """
+
+    def __init__(self, files: Sequence[str | os.PathLike[str]], path: Path = RECORD) -> None:
+        self.path = path
+        digest = hashlib.sha256(f"{sys.version}\0".encode())
+        purelib = Path(sysconfig.get_paths()["purelib"])
+        digest.update(f"{purelib}:{_mtime(purelib)}\0".encode())
+        for f in [*_what_the_checks_read(), *map(Path, files)]:
+            digest.update(f"{f}\0".encode())
+            try:
+                digest.update(f.read_bytes())
+            except OSError:
+                digest.update(b"\0missing\0")
+        self.files_digest = digest.hexdigest()
+        self._digest = digest
+        try:
+            self.recorded = path.read_text().split()
+        except (OSError, UnicodeDecodeError):
+            self.recorded = []
+
+    def files_checked(self) -> bool:
+        """Whether these very files passed every check before."""
+        return self.recorded[:1] == [self.files_digest]
+
+    def _config_digest(self, config: Mapping[str, Any]) -> str:
+        digest = self._digest.copy()
+        digest.update(repr(config).encode())  # repr: 400 and 400.0, 1 and True differ
+        return digest.hexdigest()
+
+    def checked(self, config: Mapping[str, Any]) -> bool:
+        """Whether this configuration, from these files, passed every check before."""
+        return self.recorded == [self.files_digest, self._config_digest(config)]
+
+    def record(self, config: Mapping[str, Any]) -> None:
+        """Remember that ``config`` passed (a failure to write only costs the next check)."""
+        text = f"{self.files_digest}\n{self._config_digest(config)}\n"
+        tmp = self.path.with_name(f".{self.path.name}.{os.getpid()}")
+        try:
+            self.path.parent.mkdir(parents=True, exist_ok=True)
+            tmp.write_text(text)
+            os.replace(tmp, self.path)
+        except OSError:
+            tmp.unlink(missing_ok=True)
+
+
+def _mtime(path: Path) -> int:
+    try:
+        return path.stat().st_mtime_ns
+    except OSError:
+        return 0
+
+
+def workflow_problem(
+    config: Mapping[str, Any],
+    files: Sequence[str | os.PathLike[str]],
+    record: CheckRecord | None = None,
+) -> str | None:
+    """`config_problem`, skipped when ``record`` says this configuration passed before."""
+    if record is not None and record.checked(config):
+        return None
+    problem = config_problem(config, files)
+    if problem is None and record is not None:
+        record.record(config)
+    return problem
 
 
 def main(argv: Sequence[str]) -> int:

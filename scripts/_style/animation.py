@@ -8,6 +8,7 @@ one fixed palette and no anti-aliasing, so two runs write the same bytes.
 
 from __future__ import annotations
 
+import math
 import os
 from pathlib import Path
 
@@ -26,27 +27,41 @@ PALETTE = [
 ]  # fmt: skip
 
 
+def _font(size: int) -> ImageFont.FreeTypeFont:
+    """DejaVu Sans (shipped with matplotlib) at `size` pixels: it has the Greek letters and
+    the arrows of the labels."""
+    import matplotlib
+
+    path = Path(matplotlib.get_data_path(), "fonts", "ttf", "DejaVuSans.ttf")
+    return ImageFont.truetype(str(path), size)
+
+
 class Panel:
-    """One square view of half-width `extent` (units of R) about O, `size` pixels wide."""
+    """One view of half-width `extent` (units of R) about O, `size` pixels wide: a square
+    plot between a band for the title above and one for the time below."""
 
     def __init__(self, size: int, extent: float, title: str) -> None:
         self.size, self.extent, self.title = size, extent, title
         self.scale = size / (2.0 * extent)
+        self.font = _font(max(10, size // 24))
+        self.band = self.font.size + 6
 
     def px(self, xy: NDArray[np.float64]) -> NDArray[np.float64]:
         """Pixel coordinates of points (x, y) (y upwards)."""
         xy = np.atleast_2d(xy)
-        return np.column_stack([(xy[:, 0] + self.extent), (self.extent - xy[:, 1])]) * self.scale
+        pixels = np.column_stack([(xy[:, 0] + self.extent), (self.extent - xy[:, 1])]) * self.scale
+        return pixels + np.array([0.0, self.band])
 
     def draw(self, t: float, trail: NDArray, ball: NDArray, q: NDArray, centre: NDArray):
         """The panel at time t: plane turned by t, trail (n, 2), ball at `ball`, attitude q."""
-        img = Image.new("P", (self.size, self.size), WHITE)
+        img = Image.new("P", (self.size, self.size + 2 * self.band), WHITE)
         img.putpalette([c for rgb in PALETTE for c in rgb])
         d = ImageDraw.Draw(img)
         o = self.px(np.zeros(2))[0]
         rim = 0.98 * self.extent * self.scale
         d.ellipse([*(o - rim), *(o + rim)], fill=PLANE, outline=SPOKE, width=2)
-        for radius in np.arange(2.0, self.extent, 2.0) * self.scale:
+        step = 2.0 * max(1, math.ceil(self.extent / 32.0))  # at most 16 rings however wide
+        for radius in np.arange(step, self.extent, step) * self.scale:
             d.ellipse([*(o - radius), *(o + radius)], outline=RING)
         for j in range(12):  # spokes turning with the plane (rate Omega = 1)
             a = t + j * np.pi / 6
@@ -58,9 +73,9 @@ class Panel:
         d.line([c[0] - 6, c[1], c[0] + 6, c[1]], fill=CENTRE, width=2)
         d.line([c[0], c[1] - 6, c[0], c[1] + 6], fill=CENTRE, width=2)
         self._ball(img, self.px(ball)[0], q)
-        font = ImageFont.load_default(size=max(10, self.size // 22))
-        d.text((6, 4), self.title, fill=TEXT, font=font)
-        d.text((6, self.size - 6), f"t Omega = {t:5.1f}", fill=TEXT, font=font, anchor="ld")
+        d.text((self.size / 2, 3), self.title, fill=TEXT, font=self.font, anchor="ma")
+        d.text((self.size / 2, self.size + 2 * self.band - 3), f"tΩ = {t:5.1f}", fill=TEXT,
+               font=self.font, anchor="md")  # fmt: skip
         return img
 
     def _ball(self, img: Image.Image, c: NDArray, q: NDArray) -> None:

@@ -1,13 +1,20 @@
 """The ``turntable`` command.
 
 ``turntable fit DATA.csv --radius R (--omega W | --rpm N) [--k K] [--axis X Y] [--mass M]
-[--plot FIG.png]`` fits the slipping and the rolling-resistance models to a tracked
-trajectory (`turntable.fit.fit_film`) and prints one JSON object on stdout
-(`turntable.fit.result_json`).
+[--fit-omega] [--fit-axis] [--plot FIG.png]`` fits the slipping and the rolling-resistance
+models to a tracked trajectory (`turntable.fit.fit_film`) and prints one JSON object on
+stdout (`turntable.fit.result_json`).
 
 Bad input (a file that cannot be read or parsed, see `turntable.film.read_film`; a
-negative, zero or non-finite number; too few frames) gets a one-line message on stderr
-and exit status 2, before any fitting is done.  ``python -m turntable`` runs the same.
+negative, zero or non-finite number; a value too large for the fit; too few frames) gets a
+one-line message on stderr and exit status 2, before any fitting is done.  A completed fit
+exits with status 0 and prints, after the JSON, one line on stderr per problem of the fit
+(`turntable.fit.problems`: a coefficient at a bound, a selection that is not decisive,
+residuals that are not white noise, frames too far apart), each starting with
+``turntable fit: warning:``.  With ``--plot``, the JSON is written before the figure; a
+figure that cannot be drawn gets one line on stderr and exit status 1.  A closed stdout
+(``turntable fit ... | head``) ends the command quietly.  ``python -m turntable`` runs the
+same.
 """
 
 from __future__ import annotations
@@ -17,15 +24,23 @@ import json
 import math
 import os
 import sys
+import warnings
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any, NoReturn
+
+import numpy as np
 
 from turntable import film as film_io
 from turntable import fit
 
 #: Exit status for bad input (as argparse uses for a bad command line).
 BAD_INPUT = 2
+#: Exit status when the fit was printed but the figure of ``--plot`` could not be drawn.
+PLOT_FAILED = 1
+#: Largest |value - axis| / radius (and |t| Omega) accepted: beyond it squares and sums of
+#: the residuals would come close to overflowing a double.
+MAX_DIMENSIONLESS = 1e100
 
 _DESCRIPTION = """\
 Fit both friction models to a filmed ball and select one.
@@ -37,8 +52,12 @@ these coordinates (from x towards y); for a clockwise turntable, or image coordi
 with y pointing down, negate y.  Prints one JSON object on stdout: the fitted
 coefficients mu0 = mu0_dim / (m Omega) (slipping with viscous friction) and
 delta = delta_dim / (m R^2 Omega) (rolling without slipping against a resistance torque),
-dimensionless, with standard errors, rms residuals, AIC, the initial states, and the
-selected model with the evidence (AIC difference, Akaike weights)."""
+dimensionless, with standard errors, 95 % intervals, rms residuals, a test of the
+residuals for white noise, AIC and AICc, the initial states, and the selected model with
+the evidence (AICc difference, Akaike weights, whether it is decisive).  Problems of the
+fit (a coefficient at the end of its range, reported as a limit; a selection that is not
+decisive; residuals that are not white noise, i.e. a wrong Omega, k, axis or sign of y)
+get one line each on stderr; the exit status is still 0."""
 
 
 class _Parser(argparse.ArgumentParser):
@@ -82,6 +101,17 @@ def _parser() -> argparse.ArgumentParser:
         "--mass", type=float, metavar="M", help="ball mass, kg: adds dimensional coefficients"
     )
     p.add_argument(
+        "--fit-omega",
+        action="store_true",
+        help="fit the turntable's rate too, starting from --omega/--rpm (both models)",
+    )
+    p.add_argument(
+        "--fit-axis",
+        action="store_true",
+        help="fit the axis position too, starting from --axis (the rolling model; the "
+        "slipping motion does not depend on the axis)",
+    )
+    p.add_argument(
         "--plot", metavar="FIG.png", help="draw data, both fits and the residuals (matplotlib)"
     )
     return parser
@@ -103,8 +133,58 @@ def _finite_json(value: Any) -> Any:
     return value
 
 
+def _warn(message: str) -> None:
+    print(f"turntable fit: warning: {' '.join(message.split())}", file=sys.stderr)
+
+
+def _write_json(out: dict[str, Any]) -> None:
+    """Print the JSON object; a closed stdout (``| head``) ends the command quietly."""
+    try:
+        json.dump(out, sys.stdout, indent=2, allow_nan=False)
+        sys.stdout.write("\n")
+        sys.stdout.flush()
+    except BrokenPipeError:
+        # Python flushes stdout again at exit: point it at /dev/null so that this does not
+        # raise a second time (see the signal module's notes on SIGPIPE).
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        raise SystemExit(1) from None
+
+
+def _check_plot(path: str) -> None:
+    try:
+        from matplotlib.backend_bases import FigureCanvasBase
+    except ImportError:
+        _fail(
+            "turntable fit: error: --plot needs matplotlib, which cannot be imported "
+            "(pip install matplotlib)"
+        )
+    formats = FigureCanvasBase.get_supported_filetypes()
+    suffix = Path(path).suffix.lstrip(".").lower()
+    if suffix not in formats:
+        _fail(
+            f"turntable fit: error: --plot {path}: unknown format {suffix!r} "
+            f"(use one of {', '.join(sorted(formats))})"
+        )
+    folder = Path(path).resolve().parent
+    if not folder.is_dir() or not os.access(folder, os.W_OK):
+        _fail(f"turntable fit: error: --plot: cannot write into the folder {folder}")
+
+
+def _bounds(setup: film_io.Setup) -> dict[str, tuple[float, float]]:
+    """Values the fit can take: |x - axis| / R and |t| Omega up to `MAX_DIMENSIONLESS`."""
+    span = MAX_DIMENSIONLESS * setup.radius
+    ax, ay = setup.axis
+    time = MAX_DIMENSIONLESS / setup.omega
+    return {
+        "t": (-time, time),
+        "x": (ax - span, ax + span),
+        "y": (ay - span, ay + span),
+    }
+
+
 def fit_command(args: argparse.Namespace) -> int:
-    """Run ``turntable fit``: check everything, fit, print the JSON, draw the plot."""
+    """Run ``turntable fit``: check everything, fit, print the JSON and the warnings, draw."""
     _positive("--radius", args.radius, "m")
     _positive("--omega", args.omega, "rad/s")
     _positive("--rpm", args.rpm, "revolutions per minute")
@@ -113,40 +193,49 @@ def fit_command(args: argparse.Namespace) -> int:
     if not all(math.isfinite(a) for a in args.axis):
         _fail(f"turntable fit: error: --axis must be two finite numbers (m); got {args.axis}")
     if args.plot is not None:
-        try:
-            from matplotlib.backend_bases import FigureCanvasBase
-        except ImportError:
-            _fail(
-                "turntable fit: error: --plot needs matplotlib, which cannot be imported "
-                "(pip install matplotlib)"
-            )
-
-        formats = FigureCanvasBase.get_supported_filetypes()
-        suffix = Path(args.plot).suffix.lstrip(".").lower()
-        if suffix not in formats:
-            _fail(
-                f"turntable fit: error: --plot {args.plot}: unknown format {suffix!r} "
-                f"(use one of {', '.join(sorted(formats))})"
-            )
-        folder = Path(args.plot).resolve().parent
-        if not folder.is_dir() or not os.access(folder, os.W_OK):
-            _fail(f"turntable fit: error: --plot: cannot write into the folder {folder}")
+        _check_plot(args.plot)
     omega = args.omega if args.omega is not None else film_io.rpm_to_omega(args.rpm)
     setup = film_io.Setup(args.radius, omega, args.k, (args.axis[0], args.axis[1]))
-    p = max(fit.n_parameters(m) for m in fit.MODELS)
+    options = {"fit_omega": args.fit_omega, "fit_axis": args.fit_axis}
+    p = max(fit.n_parameters(m, **options) for m in fit.MODELS)
     why = f"2 coordinates each, more than the {p} parameters of the slipping model"
     try:
-        data = film_io.read_film(args.data, min_rows=p // 2 + 1, why=why)
+        data = film_io.read_film(
+            args.data,
+            min_rows=p // 2 + 1,
+            why=why,
+            bounds=_bounds(setup),
+            bounds_why=(
+                f"too large for the fit: |x - axis| and |y - axis| must stay below "
+                f"{MAX_DIMENSIONLESS:g} radii, |t| below {MAX_DIMENSIONLESS:g} / Omega; "
+                "check the units (m, s)"
+            ),
+        )
     except film_io.FilmError as exc:
         _fail(f"turntable fit: error: {exc}")
-    result = fit.fit_film(data, setup)
-    out = _finite_json(fit.result_json(result, setup, data, args.mass, source=args.data))
+    # Extreme but accepted numbers may overflow inside the fit; what that does to the result
+    # is reported (None in the JSON, a warning), not numpy's RuntimeWarning lines.
+    with warnings.catch_warnings(), np.errstate(all="ignore"):
+        warnings.simplefilter("ignore", RuntimeWarning)
+        result = fit.fit_film(data, setup, **options)
+        check = fit.consistency(data, setup, result, **options)
+        out = _finite_json(
+            fit.result_json(result, setup, data, args.mass, source=args.data, check=check)
+        )
+    _write_json(out)
+    for message in out["warnings"]:
+        _warn(message)
     if args.plot is not None:
         from turntable import fitplot
 
-        fitplot.plot_fit(args.plot, data, out)
-    json.dump(out, sys.stdout, indent=2, allow_nan=False)
-    sys.stdout.write("\n")
+        try:
+            with warnings.catch_warnings(), np.errstate(all="ignore"):
+                warnings.simplefilter("ignore")
+                fitplot.plot_fit(args.plot, data, out)
+        except Exception as exc:  # any failure to draw: one line, never a traceback
+            reason = " ".join(str(exc).split()) or type(exc).__name__
+            print(f"turntable fit: error: --plot {args.plot}: {reason}", file=sys.stderr)
+            return PLOT_FAILED
     return 0
 
 

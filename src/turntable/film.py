@@ -7,7 +7,9 @@ times t of the frames, in metres and seconds.  The file is text, comma-separated
 - the first other line is the header; it names at least the columns ``t``, ``x`` and
   ``y`` (in any order; other columns are ignored);
 - every further line is one frame, with as many fields as the header; t, x and y are
-  finite numbers and t increases strictly from frame to frame.
+  finite numbers and t increases strictly from frame to frame;
+- a comment line containing the word ``SYNTHETIC`` (upper case) marks the film as
+  simulated, not measured (`Film.synthetic`).
 
 `read_film` refuses anything else with a `FilmError` whose message names the file, the
 line and the column.  `simulate_film` makes a synthetic film from the exact solutions
@@ -20,6 +22,7 @@ from __future__ import annotations
 
 import math
 import os
+import re
 import tempfile
 from collections.abc import Mapping, Sequence
 from pathlib import Path
@@ -32,6 +35,9 @@ from turntable import _validate
 
 #: The columns a film must have: time (s) and the centre's position (m).
 COLUMNS = ("t", "x", "y")
+#: Word of a comment line that marks a film as simulated (`synthetic_header` writes it).
+SYNTHETIC_MARK = "SYNTHETIC"
+_MARK = re.compile(rf"\b{SYNTHETIC_MARK}\b")
 
 
 class FilmError(ValueError):
@@ -47,11 +53,15 @@ class Film(NamedTuple):
         Times of the frames in s, strictly increasing, shape (n,).
     x, y : numpy.ndarray
         Position of the centre in m, shape (n,).
+    synthetic : bool
+        Whether the film is marked as simulated: `read_film` sets it for a file with a
+        comment line containing the word SYNTHETIC (as `synthetic_header` writes).
     """
 
     t: NDArray[np.float64]
     x: NDArray[np.float64]
     y: NDArray[np.float64]
+    synthetic: bool = False
 
 
 class Setup(NamedTuple):
@@ -227,7 +237,13 @@ def _number(text: str, path: str, line: int, field: int, name: str) -> float:
     return value
 
 
-def read_film(path: str | os.PathLike[str], min_rows: int = 1, why: str = "") -> Film:
+def read_film(
+    path: str | os.PathLike[str],
+    min_rows: int = 1,
+    why: str = "",
+    bounds: Mapping[str, tuple[float, float]] | None = None,
+    bounds_why: str = "",
+) -> Film:
     """Read a film (t, x, y) from a CSV file; see the module docstring for the format.
 
     Parameters
@@ -238,10 +254,15 @@ def read_film(path: str | os.PathLike[str], min_rows: int = 1, why: str = "") ->
         Fewest frames accepted.
     why : str
         Reason for ``min_rows``, added to the message if there are fewer frames.
+    bounds : mapping, optional
+        {column: (low, high)}: values of t, x or y outside [low, high] are refused.
+    bounds_why : str
+        Reason for ``bounds``, added to the message.
 
     Returns
     -------
     Film
+        With ``synthetic`` True if a comment line contains the word SYNTHETIC.
 
     Raises
     ------
@@ -249,8 +270,9 @@ def read_film(path: str | os.PathLike[str], min_rows: int = 1, why: str = "") ->
         For a file that cannot be read or is not UTF-8 text, a header without one of the
         columns t, x, y (or with one of them twice), a row with another number of fields
         than the header, a value that is not a finite number, a time that does not
-        increase, or fewer than ``min_rows`` frames.  The message starts with
-        ``<file>:<line>:`` and names the column and its field number where there is one.
+        increase, a value outside ``bounds``, or fewer than ``min_rows`` frames.  The
+        message starts with ``<file>:<line>:`` and names the column and its field number
+        where there is one.
     """
     name = os.fspath(path)
     try:
@@ -264,13 +286,17 @@ def read_film(path: str | os.PathLike[str], min_rows: int = 1, why: str = "") ->
     first = last = 0
     prev_t = -math.inf
     prev_line = 0
+    synthetic = False
     for number, chunk in enumerate(raw.split(b"\n"), start=1):
         try:
             text = chunk.decode("utf-8")
         except UnicodeDecodeError:
             raise FilmError(f"{name}:{number}: not UTF-8 text") from None
         text = text.lstrip("\ufeff").rstrip("\r")
-        if not text.strip() or text.lstrip().startswith("#"):
+        if text.lstrip().startswith("#"):
+            synthetic = synthetic or bool(_MARK.search(text))
+            continue
+        if not text.strip():
             continue
         fields = [f.strip() for f in text.split(",")]
         if header is None:
@@ -295,6 +321,12 @@ def read_film(path: str | os.PathLike[str], min_rows: int = 1, why: str = "") ->
                 f"{header_line} has {n_fields}"
             )
         values = {c: _number(fields[header[c] - 1], name, number, header[c], c) for c in COLUMNS}
+        for c, (low, high) in (bounds or {}).items():
+            if not low <= values[c] <= high:
+                raise FilmError(
+                    f"{name}:{number}: column '{c}' (field {header[c]}): {values[c]:g} is "
+                    f"outside [{low:.3g}, {high:.3g}]" + (f" ({bounds_why})" if bounds_why else "")
+                )
         if values["t"] <= prev_t:
             raise FilmError(
                 f"{name}:{number}: column 't' (field {header['t']}): t = {values['t']:g} does "
@@ -315,7 +347,7 @@ def read_film(path: str | os.PathLike[str], min_rows: int = 1, why: str = "") ->
         raise FilmError(
             f"{name}:{last or header_line}: {n} frames ({rows}); need at least {min_rows}{reason}"
         )
-    return Film(*(np.array(columns[c]) for c in COLUMNS))
+    return Film(*(np.array(columns[c]) for c in COLUMNS), synthetic=synthetic)
 
 
 # --------------------------------------------------------------------------- synthetic films
@@ -351,7 +383,7 @@ def simulate_film(
     -------
     Film
         Frames at t = i / fps; x, y = R (x, y)(Omega t) + axis + noise, each coordinate
-        with independent N(0, noise^2) errors.
+        with independent N(0, noise^2) errors; marked ``synthetic``.
     """
     from turntable.fit import positions
 
@@ -362,7 +394,7 @@ def simulate_film(
     xy = positions(model, coefficient, state0, t, setup)
     rng = np.random.default_rng(seed)
     xy = xy + noise * rng.standard_normal(xy.shape)
-    return Film(t, xy[:, 0], xy[:, 1])
+    return Film(t, xy[:, 0], xy[:, 1], synthetic=True)
 
 
 def write_film(

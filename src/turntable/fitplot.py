@@ -1,7 +1,10 @@
 """Drawing a fit of ``turntable fit``: the data, both fitted paths and the residuals.
 
 matplotlib is not a dependency of the package: it is imported by these functions only,
-when ``turntable fit --plot`` (or a figure script) asks for a drawing.
+when ``turntable fit --plot`` (or a figure script) asks for a drawing.  Every number is
+read from the JSON object of the command (`turntable.fit.result_json`), where a value that
+is not finite, or a coefficient reported as a limit, is None: such a model is labelled
+accordingly and, if it has no finite fit, left out of the drawing.
 """
 
 from __future__ import annotations
@@ -9,6 +12,7 @@ from __future__ import annotations
 import math
 import os
 import tempfile
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
@@ -17,6 +21,10 @@ import numpy as np
 from turntable.film import Film
 from turntable.fit import COEFFICIENT, MODELS, fitted_positions
 
+#: Relative standard error above which a coefficient is written with its 95 % interval
+#: instead of "value ± stderr" (which would suggest negative values).
+INTERVAL_ABOVE = 0.3
+
 #: Colour and label of each model.
 STYLE = {
     "slipping": ("C0", "slipping"),
@@ -24,19 +32,66 @@ STYLE = {
 }
 
 
-def value_with_error(value: float, stderr: float | None) -> str:
-    """Return "value ± stderr" rounded to the second significant digit of stderr."""
+def _two(x: float) -> str:
+    """``x`` to two significant digits, without an exponent from 1e-3 to 1e5 (220, 0.046)."""
+    rounded = float(f"{x:.2g}")
+    return f"{rounded:g}" if 1e-3 <= abs(rounded) < 1e5 else f"{rounded:.2g}"
+
+
+def value_with_error(
+    value: float | None,
+    stderr: float | None,
+    ci95: Sequence[float | None] | None = None,
+) -> str:
+    """Return "value ± stderr" rounded to the second significant digit of stderr.
+
+    With ``ci95`` and a relative error stderr / value above `INTERVAL_ABOVE`, return
+    "value (95 %: low–high)" instead, the interval on the log scale of
+    `turntable.fit` (exp(ln c -+ 1.96 se(ln c))).  None or non-finite parts are left out
+    ("n/a" for a missing value).
+    """
+    if value is None or not math.isfinite(value):
+        return "n/a"
     if stderr is None or not math.isfinite(stderr) or stderr <= 0:
         return f"{value:.4g}"
+    if (
+        ci95 is not None
+        and value > 0
+        and stderr / value > INTERVAL_ABOVE
+        and all(v is not None and math.isfinite(v) for v in ci95)
+    ):
+        return f"{_two(value)} (95 %: {_two(ci95[0])}–{_two(ci95[1])})"
     decimals = max(0, 1 - math.floor(math.log10(stderr)))
     return f"{value:.{decimals}f} ± {stderr:.{decimals}f}"
 
 
+def coefficient_text(entry: dict[str, Any], name: str) -> str:
+    """Return the coefficient ``name`` of one model's JSON entry as text.
+
+    "value ± stderr" or "value (95 %: low–high)" (`value_with_error`); for a coefficient
+    at the end of its search range, the one-sided limit ("> 210" or "< 1e-05").
+    """
+    for kind, sign in (("lower", ">"), ("upper", "<")):
+        limit = entry.get(f"{name}_{kind}_limit")
+        if limit is not None:
+            return f"{sign} {limit:.3g} (95 %)"
+    return value_with_error(entry.get(name), entry.get(f"{name}_stderr"), entry.get(f"{name}_ci95"))
+
+
 def _coefficient(result: dict[str, Any], model: str) -> str:
     name = COEFFICIENT[model]
-    entry = result[model]
     symbol = {"mu0": r"$\mu_0$", "delta": r"$\delta$"}[name]
-    return f"{symbol} = {value_with_error(entry[name], entry[name + '_stderr'])}"
+    text = coefficient_text(result[model], name)
+    return f"{symbol} {text}" if text[0] in "<>" else f"{symbol} = {text}"
+
+
+def _drawable(result: dict[str, Any], model: str) -> bool:
+    """Whether the JSON holds a finite fit of ``model`` to draw."""
+    entry = result[model]
+    return all(v is not None for v in entry.get("state0", [None])) and (
+        entry.get(COEFFICIENT[model]) is not None
+        or entry.get(f"{COEFFICIENT[model]}_search_bound") is not None
+    )
 
 
 def _label(result: dict[str, Any], model: str) -> str:
@@ -60,6 +115,8 @@ def draw_paths(ax: Any, film: Film, result: dict[str, Any], n_curve: int = 3000)
     t = np.linspace(film.t[0], film.t[-1], max(n_curve, film.t.size))
     ax.plot(1e3 * film.x, 1e3 * film.y, ".", color="0.6", ms=1.5, label="data")
     for model in MODELS:
+        if not _drawable(result, model):
+            continue
         xy = fitted_positions(result, model, t)
         color, _ = STYLE[model]
         ax.plot(1e3 * xy[:, 0], 1e3 * xy[:, 1], color=color, lw=0.8, label=_label(result, model))
@@ -75,19 +132,23 @@ def draw_residuals(
 
     Each frame's residual per coordinate, sqrt(|data - fit|^2 / 2) in mm, as faint
     points, and its rms over a moving window of 1/``windows`` of the film as a line: the
-    fit of the right model stays flat at the tracking noise, a wrong one shows structure.
+    fit of the right model stays flat at the tracking noise, a wrong one shows structure
+    (the window holds at least 5 frames).
     The labels give each fit's rms residual and its model or, if ``coefficients``, its
     coefficient.
     """
-    window = max(1, film.t.size // windows)
+    window = max(5, film.t.size // windows)
     for model in MODELS:
+        if not _drawable(result, model):
+            continue
         xy = fitted_positions(result, model, film.t)
         per_coordinate = np.hypot(film.x - xy[:, 0], film.y - xy[:, 1]) / math.sqrt(2.0)
         color, label = STYLE[model]
         rms = result[model]["rms_residual_m"]
-        label = f"{label}, rms {1e3 * rms:.3g} mm"
+        rms_text = "n/a" if rms is None else f"{1e3 * rms:.3g} mm"
+        label = f"{label}, rms {rms_text}"
         if coefficients:
-            label = f"{_coefficient(result, model)}\nrms {1e3 * rms:.3g} mm"
+            label = f"{_coefficient(result, model)}\nrms {rms_text}"
         ax.semilogy(film.t, 1e3 * per_coordinate, ".", color=color, ms=1.0, alpha=0.25)
         ax.semilogy(
             film.t,
@@ -99,11 +160,30 @@ def draw_residuals(
     ax.set(xlabel="$t$ (s)", ylabel="residual per coordinate (mm)")
 
 
+def selection_text(result: dict[str, Any]) -> str:
+    """Return the selection of a JSON result in words, e.g. "selected slipping (AICc
+    difference 5.5e+03, Akaike weight 1)", marked "not decisive" where it is not."""
+    sel = result["selection"]
+    selected = result.get("selected")
+    if selected is None:
+        return "no model selected" + (f": {sel['reason']}" if sel.get("reason") else "")
+    diff, weight = sel.get("aicc_difference"), sel.get("akaike_weights", {}).get(selected)
+    parts = []
+    if diff is not None:
+        parts.append(f"AICc difference {diff:.3g}")
+    if weight is not None:
+        parts.append(f"Akaike weight {weight:.3g}")
+    if not sel.get("decisive", True):
+        parts.append("not decisive")
+    return f"selected {STYLE[selected][1]}" + (f" ({', '.join(parts)})" if parts else "")
+
+
 def plot_fit(path: str | os.PathLike[str], film: Film, result: dict[str, Any]) -> None:
     """Write a figure of the fit to ``path`` (format from its suffix), atomically.
 
     Left: the data and both fitted paths; right: the residuals against time.  The title
-    names the selected model and the AIC difference.
+    names the selected model and the AICc difference (or why none is selected).  The file
+    is readable by everyone (mode 0644, as `turntable.film.write_film` writes).
     """
     import matplotlib
 
@@ -115,18 +195,13 @@ def plot_fit(path: str | os.PathLike[str], film: Film, result: dict[str, Any]) -
     draw_residuals(ax_r, film, result)
     ax_p.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.15), ncols=2)
     ax_r.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.15), ncols=2)
-    sel = result["selection"]
-    fig.suptitle(
-        f"{result['data']['file']}: selected {STYLE[result['selected']][1]} "
-        f"(AIC difference {sel['aic_difference']:.3g}, Akaike weight "
-        f"{sel['akaike_weights'][result['selected']]:.3g})",
-        fontsize=9,
-    )
+    fig.suptitle(f"{result['data']['file']}: {selection_text(result)}", fontsize=9)
     path = Path(path)
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.stem}.", suffix=path.suffix)
     os.close(fd)
     try:
         fig.savefig(tmp, dpi=150)
+        os.chmod(tmp, 0o644)
         os.replace(tmp, path)
     finally:
         Path(tmp).unlink(missing_ok=True)

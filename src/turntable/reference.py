@@ -16,7 +16,12 @@ quantity is recomputed another way, most of them at high precision:
 - the spiral centre and the modal parts: a least-squares solve (`kernel_projection`)
   and the eigendecomposition (`eig_kernel_part`, `eig_mode_part`);
 - the slip velocity and the conserved quantities written out from their definitions,
-  and the no-slip rate from the constraint.
+  and the no-slip rate from the constraint;
+- the rolling-resistance model of `turntable.rolling`: its 4x4 matrix read off the
+  constrained three-dimensional Newton-Euler equations in mpmath (`rolling_matrix`), its
+  eigenvalues (`rolling_spectrum`), its solution (`rolling_solution`) and the coefficient
+  of equal decay (`rolling_equal_decay_delta`) at `ROLLING_DPS` digits; `rolling` holds
+  them under the names of `turntable.rolling` (``rolling.spectrum``, ...).
 
 Every function is deterministic: the same input gives the same output bit for bit.
 """
@@ -25,7 +30,7 @@ from __future__ import annotations
 
 import functools
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any, NamedTuple
 
@@ -380,6 +385,30 @@ def eig_mode_part(
     return np.real(vec[:, keep] @ coords[keep])
 
 
+def mp_decaying_distance_ratio(z0: ArrayLike, mu0: float, k: float, t: float) -> float:
+    """Distance from the equilibrium after time ``t`` over that at 0, on the decaying subspace.
+
+    The decaying part of ``z0`` (the modes with negative real part, from mpmath's
+    eigendecomposition of `mp_system_matrix` at `DPS` digits) is evolved with
+    ``mpmath.expm`` at the same precision, so that rounding does not seed the growing
+    modes (which grow by exp(alpha1 t)); the ratio of its norms at t and 0 is returned.
+    In the complex form the decaying part is one mode c exp(lambda_- t) q, so the ratio is
+    exp(alpha2 t) exactly.
+    """
+    with mpmath.workdps(DPS):
+        L = mp_system_matrix(mu0, k)
+        lam, vec = mpmath.eig(L)
+        coords = mpmath.lu_solve(vec, mpmath.matrix([mpmath.mpf(float(c)) for c in z0]))
+        scale = max(abs(x) for x in lam)
+        keep = [i for i, x in enumerate(lam) if mpmath.re(x) < -(mpmath.mpf(10) ** -20) * scale]
+        if len(keep) != 2:  # pragma: no cover - two decaying modes by (2.6)
+            raise ArithmeticError(f"expected two decaying modes, got {lam}")
+        part = sum((vec[:, i] * coords[i] for i in keep), mpmath.matrix(6, 1))
+        part = mpmath.matrix([mpmath.re(x) for x in part])
+        later = mpmath.expm(L * mpmath.mpf(float(t))) * part
+        return float(mpmath.norm(later) / mpmath.norm(part))
+
+
 def invariant_residual(
     matrix: NDArray[np.float64], z: NDArray[np.float64], alpha: float, beta: float
 ) -> float:
@@ -435,3 +464,192 @@ def log_log_slope(x: ArrayLike, y: ArrayLike) -> float:
     x = np.asarray(x, dtype=float)
     y = np.abs(np.asarray(y, dtype=float))
     return float(np.polyfit(np.log(x), np.log(y), 1)[0])
+
+
+# --------------------------------------------------------------------------------------
+# The rolling-resistance model (`turntable.rolling`)
+# --------------------------------------------------------------------------------------
+#
+# Nothing here uses the reduction (R4) or the closed forms of `turntable.rolling`: the 4x4
+# matrix is read off the constrained three-dimensional Newton-Euler equations, evaluated in
+# mpmath (reaction force as Lagrange multiplier, cross products, a 3x3 linear solve), and
+# the eigenvalues and the solution come from mpmath's eigensolver and matrix exponential.
+
+#: Decimal digits of the references of the rolling model.
+ROLLING_DPS = 50
+
+
+def _mp_cross(a: list, b: list) -> list:
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def _rolling_planar_rhs(xyv: list, delta: mpmath.mpf, k: mpmath.mpf) -> list:
+    """d(x, y, vx, vy)/dt of the constrained 3-D equations at a no-slip state."""
+    gamma = [mpmath.mpf(0), mpmath.mpf(0), mpmath.mpf(1)]
+    r = [xyv[0], xyv[1], mpmath.mpf(1)]
+    v = [xyv[2], xyv[3], mpmath.mpf(0)]
+    # the constraint v + gamma x w - gamma x r = 0 fixes the horizontal w
+    w = [r[0] - v[1], r[1] + v[0], mpmath.mpf(0)]
+    gw, gr = _mp_cross(gamma, w), _mp_cross(gamma, r)
+    if any(v[i] + gw[i] - gr[i] != 0 for i in range(3)):  # pragma: no cover - by construction
+        raise ArithmeticError("the state is not on the no-slip constraint")
+    moment = [-delta * w[0], -delta * w[1], mpmath.mpf(0)]
+    g = mpmath.mpf(9.81)
+    # d/dt constraint: (F - g gamma) + gamma x ((-gamma x F + M) / k) - gamma x v = 0
+    cols = []
+    for j in range(3):
+        e = [mpmath.mpf(int(i == j)) for i in range(3)]
+        ge = _mp_cross(gamma, [-c for c in _mp_cross(gamma, e)])
+        cols.append([e[i] + ge[i] / k for i in range(3)])
+    a = mpmath.matrix([[cols[j][i] for j in range(3)] for i in range(3)])
+    gm = _mp_cross(gamma, moment)
+    gv = _mp_cross(gamma, v)
+    b = mpmath.matrix([g * gamma[i] + gv[i] - gm[i] / k for i in range(3)])
+    f = mpmath.lu_solve(a, b)
+    dv = [f[i] - g * gamma[i] for i in range(3)]
+    return [v[0], v[1], dv[0], dv[1]]
+
+
+def rolling_matrix(delta: float, k: float) -> mpmath.matrix:
+    """Return the rolling model's 4x4 matrix on (x, y, vx, vy) at `ROLLING_DPS` digits.
+
+    Parameters
+    ----------
+    delta, k : float
+        Rolling-resistance coefficient and inertia ratio (exact doubles).
+
+    Returns
+    -------
+    mpmath.matrix
+        Column j is the right-hand side of the constrained 3-D Newton-Euler equations
+        (torque -delta w on the horizontal spin) at the j-th unit state.
+    """
+    with mpmath.workdps(ROLLING_DPS):
+        d, kk = mpmath.mpf(delta), mpmath.mpf(k)
+        m = mpmath.matrix(4, 4)
+        for j in range(4):
+            col = _rolling_planar_rhs([mpmath.mpf(int(i == j)) for i in range(4)], d, kk)
+            for i in range(4):
+                m[i, j] = col[i]
+        return m
+
+
+class MpRollingSpectrum(NamedTuple):
+    """(sigma_g, nu_g, sigma_c, nu_c) as floats, from the high-precision eigenvalues."""
+
+    sigma_g: float
+    nu_g: float
+    sigma_c: float
+    nu_c: float
+
+
+def rolling_spectrum(delta: float, k: float) -> MpRollingSpectrum:
+    """Return the rolling model's eigenvalues from mpmath.eig of `rolling_matrix`.
+
+    Parameters
+    ----------
+    delta, k : float
+        Rolling-resistance coefficient and inertia ratio.
+
+    Returns
+    -------
+    MpRollingSpectrum
+        The growing root lambda_g (Re > 0, the larger imaginary part) and the centre's
+        root lambda_c (Re < 0, the smaller imaginary part) of the real 4x4 system, whose
+        eigenvalues are these two and their conjugates.
+    """
+    with mpmath.workdps(ROLLING_DPS):
+        ev = mpmath.eig(rolling_matrix(delta, k), left=False, right=False)
+        grow = max((e for e in ev if mpmath.re(e) > 0), key=lambda e: mpmath.im(e))
+        cent = min((e for e in ev if mpmath.re(e) < 0), key=lambda e: mpmath.im(e))
+        return MpRollingSpectrum(
+            float(mpmath.re(grow)),
+            float(mpmath.im(grow)),
+            float(mpmath.re(cent)),
+            float(mpmath.im(cent)),
+        )
+
+
+def rolling_solution(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> NDArray[np.float64]:
+    """Return the rolling motion from z0 at the times t, shape (len(t), 6).
+
+    Parameters
+    ----------
+    z0 : array_like
+        Initial state (x, y, vx, vy, wx, wy); only (x, y, vx, vy) is used.
+    t : array_like
+        Times.
+    delta, k : float
+        Rolling-resistance coefficient and inertia ratio.
+
+    Returns
+    -------
+    numpy.ndarray
+        exp(M t) (x, y, vx, vy) with M = `rolling_matrix`, by mpmath.expm at
+        `ROLLING_DPS` digits; w = (x - vy, y + vx) from the no-slip constraint.
+    """
+    z0 = np.asarray(z0, dtype=float)
+    out = []
+    with mpmath.workdps(ROLLING_DPS):
+        m = rolling_matrix(delta, k)
+        x0 = mpmath.matrix([mpmath.mpf(float(c)) for c in z0[:4]])
+        for ti in np.asarray(t, dtype=float):
+            x = mpmath.expm(m * mpmath.mpf(float(ti))) * x0
+            out.append([float(c) for c in (x[0], x[1], x[2], x[3], x[0] - x[3], x[1] + x[2])])
+    return np.array(out)
+
+
+def rolling_equal_decay_delta(mu0: float, k: float) -> float:
+    """Return delta with |Re lambda_c(delta)| = |alpha2(mu0)|, at `ROLLING_DPS` digits.
+
+    Parameters
+    ----------
+    mu0, k : float
+        Slipping friction coefficient and inertia ratio.
+
+    Returns
+    -------
+    float
+        The root found by mpmath.findroot; |alpha2| from the textbook roots (2.4) of the
+        slipping model, Re lambda_c from the roots of the quadratic
+        (k+1) l^2 + (delta - i k) l - i delta.
+    """
+    with mpmath.workdps(ROLLING_DPS):
+        kk, m = mpmath.mpf(k), mpmath.mpf(mu0)
+        mu = m * (kk + 1) / (2 * kk)
+        eps = 4 * kk**2 / (m * (kk + 1) ** 2)
+        alpha2 = mu * (-1 - mpmath.re(mpmath.sqrt(1 + 1j * eps)))
+
+        def re_centre(d: mpmath.mpf) -> mpmath.mpf:
+            roots = mpmath.polyroots(
+                [kk + 1, d - 1j * kk, -1j * d], maxsteps=200, extraprec=2 * ROLLING_DPS
+            )
+            return min(mpmath.re(r) for r in roots)
+
+        bracket = (-alpha2 * kk / 2, -alpha2 * 4 * (kk + 1))
+        return float(mpmath.findroot(lambda d: re_centre(d) - alpha2, bracket, solver="anderson"))
+
+
+@dataclass(frozen=True)
+class RollingReferences:
+    """The references of the rolling model under the names of `turntable.rolling`.
+
+    ``from turntable.reference import rolling as ref`` gives ``ref.spectrum``,
+    ``ref.solution``, ... next to the functions they check.
+    """
+
+    DPS: int
+    matrix: Callable[[float, float], mpmath.matrix]
+    spectrum: Callable[[float, float], MpRollingSpectrum]
+    solution: Callable[[ArrayLike, ArrayLike, float, float], NDArray[np.float64]]
+    equal_decay_delta: Callable[[float, float], float]
+
+
+#: The rolling model's references: `rolling_matrix`, `rolling_spectrum`, ...
+rolling = RollingReferences(
+    DPS=ROLLING_DPS,
+    matrix=rolling_matrix,
+    spectrum=rolling_spectrum,
+    solution=rolling_solution,
+    equal_decay_delta=rolling_equal_decay_delta,
+)

@@ -86,6 +86,34 @@ from turntable import _validate
 from turntable.solution import slip_velocity
 from turntable.spectrum import _spectrum
 
+__all__ = [
+    "COMPARISONS",
+    "GAMMA",
+    "SLIP_TOLERANCE",
+    "TORQUES",
+    "RollingModes",
+    "RollingNewtonEuler",
+    "RollingSpectrum",
+    "centre_decay_rate",
+    "eigenvalues",
+    "equal_decay_delta",
+    "equal_power_delta",
+    "growth_per_turn_ratio",
+    "growth_rate",
+    "log_growth_per_turn",
+    "matched_delta",
+    "modal_terms",
+    "newton_euler",
+    "power_rolling",
+    "power_slipping",
+    "slip_velocity",
+    "solve",
+    "spectrum",
+    "spiral_centre",
+    "state_on_constraint",
+    "system_matrix",
+]
+
 GAMMA = np.array([0.0, 0.0, 1.0])
 
 #: Largest slip |u| accepted by `solve`, relative to 1 + max |z0|.
@@ -278,6 +306,8 @@ class _Modes(NamedTuple):
     ac: complex
     lg: complex
     lc: complex
+    delta: float
+    k: float
 
 
 def _modes(z0: ArrayLike, delta: float, k: float) -> _Modes:
@@ -295,7 +325,7 @@ def _modes(z0: ArrayLike, delta: float, k: float) -> _Modes:
     lg, lc = complex(s.sigma_g, s.nu_g), complex(s.sigma_c, s.nu_c)
     r0, v0 = complex(z0[0], z0[1]), complex(z0[2], z0[3])
     d = lg - lc
-    return _Modes((v0 - lc * r0) / d, (lg * r0 - v0) / d, lg, lc)
+    return _Modes((v0 - lc * r0) / d, (lg * r0 - v0) / d, lg, lc, delta, k)
 
 
 def _mode_states(amp: NDArray[np.complex128], lam: complex) -> NDArray[np.float64]:
@@ -304,16 +334,30 @@ def _mode_states(amp: NDArray[np.complex128], lam: complex) -> NDArray[np.float6
     return np.stack([amp.real, amp.imag, v.real, v.imag, w.real, w.imag], axis=-1)
 
 
+def _time_limit(m: _Modes) -> float:
+    """Largest t at which the rolling solution and each of its modes are finite doubles.
+
+    Every component of a mode A e^{lambda t} (position, velocity lambda A e^{lambda t} and
+    spin w = r + i v) is at most |A| (1 + |lambda|) |e^{lambda t}|; the centre's mode
+    decays, so the sum stays below (|A_g| (1 + |lambda_g|) + |A_c| (1 + |lambda_c|))
+    e^{sigma_g t}.  Without a growing part (A_g = 0, e.g. z0 = 0) there is no limit.
+    """
+    if m.ag == 0:
+        return np.inf
+    size = abs(m.ag) * (1.0 + abs(m.lg)) + abs(m.ac) * (1.0 + abs(m.lc))
+    return float(_validate.growth_limit(m.lg.real, size))
+
+
 def _exp(lam: complex, t: NDArray[np.float64], amp: complex) -> NDArray[np.complex128]:
-    """amp e^{lam t}, raising a ValueError where it overflows."""
-    scale = max(abs(amp) * max(1.0, abs(lam)) * 2.0, 1e-300)
-    t_max = (np.log(np.finfo(float).max) - np.log(scale)) / lam.real if lam.real > 0 else np.inf
-    if t.size and t.max() > t_max:
-        raise ValueError(
-            f"t must be <= {t_max:.6g} for this z0, delta and k: beyond, the growing "
-            "mode exceeds the largest double"
-        )
-    with np.errstate(under="ignore"):
+    """amp e^{lam t} for times already checked against `_time_limit` (0 if amp is 0).
+
+    A decaying mode may underflow to 0, and for huge t its exponent lam.real t may round
+    to -inf (e^{-inf} = 0 exactly): both are harmless.  Im lam t stays finite: nu_g lies
+    between k / (k + 1) and 1, |nu_c| below 1 / (k + 1).
+    """
+    if amp == 0:
+        return np.zeros(t.shape, dtype=complex)
+    with np.errstate(under="ignore", over="ignore" if lam.real < 0 else None):
         return amp * np.exp(lam.real * t) * (np.cos(lam.imag * t) + 1j * np.sin(lam.imag * t))
 
 
@@ -349,6 +393,13 @@ def modal_terms(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> RollingM
     """
     t = _validate.times("t", t)
     m = _modes(z0, delta, k)
+    _validate.times_within(
+        "t",
+        t,
+        _time_limit(m),
+        f"for delta={m.delta:g}, k={m.k:g}, e^(sigma_g t) times the size of the solution "
+        "overflows a double beyond it",
+    )
     return RollingModes(
         _mode_states(_exp(m.lg, t, m.ag), m.lg), _mode_states(_exp(m.lc, t, m.ac), m.lc)
     )
@@ -444,19 +495,24 @@ def equal_power_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
     r = rho, v = lambda_+ rho, w = -i lambda_+ rho / k, so
     u = rho ((k + 1) lambda_+ - i k) / k and the ratio |u|^2 / |w|^2 is the
     same at every instant; delta_P |w|^2 = mu0 |u|^2 then holds at every
-    instant, hence also on average.  (k + 1) beta - k is evaluated as
-    -2 k (h - 1) / (s (2 + s)), s = sqrt(2 (h + 1)), h - 1 = eps^2 / (h + 1),
-    free of cancellation; delta_P ~ k^4 / (mu0 (k + 1)^2) for large mu0.
+    instant, hence also on average.  Evaluated without cancellation, overflow
+    or underflow for every mu0 at which `turntable.spectrum` is finite:
+    alpha1 = beta b / (a + 1) (as (a - 1) / b = b / (a + 1)); (k + 1) beta - k
+    = -2 k (h - 1) / (s (2 + s)), s = sqrt(2 (h + 1)), h - 1 = eps (eps / (h + 1));
+    delta_P = (sqrt(mu0) |(k + 1) lambda_+ - i k| / |lambda_+|)^2.
+    delta_P -> k^2 as mu0 -> 0 and delta_P ~ k^4 / (mu0 (k + 1)^2) as mu0 -> infinity.
     """
     mu0 = _validate.positive("mu0", mu0)
     k = _validate.positive("k", k)
     mu0, k = np.broadcast_arrays(mu0, k)
-    sp = _spectrum(mu0, k)
+    with np.errstate(over="ignore"):  # alpha1 of _spectrum (not used) overflows below 1e-206
+        sp = _spectrum(mu0, k)
     h = np.hypot(1.0, sp.eps)
     s = np.sqrt(2.0 * (h + 1.0))
-    x = (k + 1.0) * sp.alpha1
-    y = -2.0 * k * (sp.eps**2 / (h + 1.0)) / (s * (2.0 + s))
-    return mu0 * (x * x + y * y) / (sp.alpha1**2 + sp.beta**2)
+    tan = sp.b / (sp.a + 1.0)  # alpha1 / beta
+    x = (k + 1.0) * sp.beta * tan
+    y = -2.0 * k * (sp.eps * (sp.eps / (h + 1.0))) / (s * (2.0 + s))
+    return (np.sqrt(mu0) * np.hypot(x, y) / (sp.beta * np.hypot(1.0, tan))) ** 2
 
 
 def equal_decay_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
@@ -477,16 +533,20 @@ def equal_decay_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
     Comparison (c): equal decay rates of the non-growing parts (z- of (2.7)
     and the moving centre).  |sigma_c| = (delta + p) / (2 (k + 1)) increases
     strictly with delta and lies between delta / (2 (k + 1)) and delta / k,
-    so the root lies in [k |alpha2|, 2 (k + 1) |alpha2|]; it is found by
-    Brent's method to a relative 1e-15.  Large mu0: delta ~ mu0 (k+1)^2 / k;
-    small mu0: delta ~ k sqrt(mu0 / 2).
+    so the root lies in [k |alpha2|, 2 (k + 1) |alpha2|].  The lower end is the
+    root's limit for small mu0 (where |sigma_c| = delta / k (1 - O(delta))), so
+    in doubles it can be the root itself: Brent's method brackets it in
+    [k |alpha2| / 2, 4 (k + 1) |alpha2|], where the function changes sign by at
+    least a half at either end, and finds it to a relative 1e-15.  Large mu0:
+    delta ~ mu0 (k+1)^2 / k; small mu0: delta ~ k |alpha2| ~ k sqrt(mu0 / 2).
     """
     from scipy.optimize import brentq
 
     mu0 = _validate.positive("mu0", mu0)
     k = _validate.positive("k", k)
     mu0, k = np.broadcast_arrays(mu0, k)
-    target = -_spectrum(mu0, k).alpha2
+    with np.errstate(over="ignore"):  # alpha1 of _spectrum (not used) overflows below 1e-206
+        target = -_spectrum(mu0, k).alpha2
     out = np.empty(mu0.shape)
     for idx in np.ndindex(mu0.shape):
         kk, a2 = np.float64(k[idx]), float(target[idx])
@@ -494,7 +554,8 @@ def equal_decay_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
         def f(dl: float, kk: np.float64 = kk, a2: float = a2) -> float:
             return float(-_spectrum_rolling(np.float64(dl), kk).sigma_c) / a2 - 1.0
 
-        out[idx] = brentq(f, float(kk) * a2, 2.0 * (float(kk) + 1.0) * a2, xtol=1e-300, rtol=1e-15)
+        lo, hi = 0.5 * float(kk) * a2, 4.0 * (float(kk) + 1.0) * a2
+        out[idx] = brentq(f, lo, hi, xtol=1e-300, rtol=1e-15)
     return out
 
 
@@ -585,10 +646,13 @@ def newton_euler(
     torque : {"horizontal", "full", "relative"}
         M = -delta w_h, M = -delta w, or M = -delta (w - gamma) (relative
         to the plane).
-    wz0, g : float
-        Initial vertical spin and dimensionless gravity g / (R Omega^2).
+    wz0 : float
+        Initial vertical spin, finite.
+    g : float
+        Dimensionless gravity g / (R Omega^2), finite and > 0 (the normal
+        force is m g: the ball is pressed onto the plane).
     rtol, atol : float
-        Tolerances of `scipy.integrate.solve_ivp` (DOP853).
+        Tolerances of `scipy.integrate.solve_ivp` (DOP853), finite and > 0.
 
     Returns
     -------
@@ -604,11 +668,15 @@ def newton_euler(
     if torque not in TORQUES:
         raise ValueError(f"torque must be one of {TORQUES}; got {torque!r}")
     z0 = _validate.state("z0", z0)
-    _modes(z0, delta, k)  # validates delta, k and the constraint
+    m = _modes(z0, delta, k)  # validates delta, k and the constraint
+    delta, k = m.delta, m.k
     t = _validate.times("t", t, increasing=True)
     if t.size == 0:
         raise ValueError("t must be a non-empty 1-D array of times >= 0")
-    delta, k = float(delta), float(k)
+    wz0 = _validate.finite_scalar("wz0", wz0)
+    g = _validate.positive_scalar("g", g)
+    rtol = _validate.positive_scalar("rtol", rtol)
+    atol = _validate.positive_scalar("atol", atol)
     gvec = g * GAMMA
 
     def cross_g(a: NDArray) -> NDArray:
@@ -635,7 +703,7 @@ def newton_euler(
 
     from scipy.integrate import solve_ivp
 
-    y0 = np.array([z0[0], z0[1], 1.0, z0[2], z0[3], 0.0, z0[4], z0[5], float(wz0)])
+    y0 = np.array([z0[0], z0[1], 1.0, z0[2], z0[3], 0.0, z0[4], z0[5], wz0])
     sol = solve_ivp(
         rhs, (0.0, max(float(t[-1]), 1e-300)), y0, method="DOP853", t_eval=t, rtol=rtol, atol=atol
     )

@@ -15,15 +15,32 @@ def source(path):
     return os.path.relpath(ROOT / path)
 
 
+# Files under a source folder that are not sources: compiled Python, and what editors and
+# tools leave beside a file (vim's .name.swp, emacs's name~ and #name#, patch leftovers).
+NOT_SOURCES = ("~", ".swp", ".swo", ".swx", ".bak", ".orig", ".rej", ".pyc", ".pyo")
+
+
+def is_source(path, folder):
+    """Whether `path`, a file under `folder`, is a source: not hidden (no part of it below
+    `folder` starts with a dot: .name.swp, .mypy_cache/), not compiled, not a backup."""
+    parts = path.relative_to(folder).parts
+    return (
+        path.is_file()
+        and "__pycache__" not in parts
+        and not any(part.startswith(".") for part in parts)
+        and not path.name.endswith(NOT_SOURCES)
+        and not (path.name.startswith("#") and path.name.endswith("#"))
+    )
+
+
 def sources(folder):
-    """Every file under `folder` of the repository (found by glob: a new module is included),
-    as paths from source(), compiled Python left out.
+    """Every source file under `folder` of the repository (found by glob: a new module is
+    included), as paths from source(); hidden files, editor backups and compiled Python
+    left out (see is_source), so that opening a file in an editor reruns nothing.
     """
-    root = ROOT
+    top = Path(ROOT, folder)
     return sorted(
-        source(p.relative_to(root))
-        for p in Path(root, folder).rglob("*")
-        if p.is_file() and "__pycache__" not in p.parts
+        source(p.relative_to(ROOT)) for p in top.rglob("*") if is_source(p, top)
     )
 
 

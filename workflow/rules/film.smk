@@ -1,7 +1,8 @@
 # A filmed ball: synthetic films of the ball of config section `film` (marked SYNTHETIC),
-# fitted with the command `turntable fit` (the package's console script), and what the two
+# fitted with the command `turntable fit` (the package's console script), what the two
 # film figures need beyond the loop of figures.smk (Fig. 8, what the camera can measure,
-# also writes its numbers; Fig. 9 draws the fits of the synthetic films).
+# also writes its numbers; Fig. 9 draws the fits of the synthetic films), and the page
+# "What a film can tell" of the HTML report, made from those numbers.
 import os
 import sys
 
@@ -10,10 +11,16 @@ FILM_SPECS = {film["name"]: film for film in config["synthetic_film"]["films"]}
 FILMS = list(FILM_SPECS)
 FILM_CSV = expand("results/film/{film}.csv", film=FILMS)
 FILM_FITS = expand("results/film/{film}.json", film=FILMS)
-FILM_OUTPUTS = [*FILM_CSV, *FILM_FITS, "results/film/measurability.json"]
+# The truth of every synthetic film (model, coefficient, start, seed), marked synthetic.
+FILM_TRUTH = "results/film/synthetic.json"
+FILM_MEASURABILITY = "results/film/measurability.json"
+FILM_OUTPUTS = [*FILM_CSV, FILM_TRUTH, *FILM_FITS, FILM_MEASURABILITY]
+# What the article's section "What a film can tell" reads (rule paper).
+FILM_RESULTS = [FILM_TRUTH, *FILM_FITS, FILM_MEASURABILITY]
+FILM_FIGURES = ["fig8_measurability", "fig9_fit"]
 
 FIGURE_EXTRAS["fig8_measurability"] = {
-    "output": {"json": "results/film/measurability.json"},
+    "output": {"json": ensure("results/film/measurability.json", non_empty=True)},
     "params": {"film": config["film"]},
 }
 FIGURE_EXTRAS["fig9_fit"] = {
@@ -41,6 +48,7 @@ rule synthetic_film:
         script=source("scripts/synthetic_film.py"),
     output:
         csv=[ensure(path, non_empty=True) for path in FILM_CSV],
+        truth=ensure(FILM_TRUTH, non_empty=True),
         notebook=notebook("synthetic_film"),
     log:
         "logs/synthetic_film.log",
@@ -75,6 +83,40 @@ rule fit_film:
         k=config["film"]["k"],
         axis=" ".join(str(a) for a in config["film"]["axis_m"]),
         mass=config["film"]["mass_kg"],
+    # The command's warnings (one line each, exit status 0) go to the log.
     shell:
         "turntable fit {input.csv:q} --radius {params.radius} --rpm {params.rpm} "
         "--k {params.k} --axis {params.axis} --mass {params.mass} > {output:q} 2> {log:q}"
+
+
+# The page "What a film can tell" of the HTML report (results/film.html): what the camera
+# of section film can measure and what the fits of the synthetic films recovered, every
+# number read from the results above, with Figures 8 and 9 and their captions.
+rule film_page:
+    input:
+        fits=FILM_FITS,
+        truth=FILM_TRUTH,
+        measurability=FILM_MEASURABILITY,
+        pngs=expand("figures/{name}.png", name=FILM_FIGURES),
+        captions=[source(f"workflow/report/{name}.rst") for name in FILM_FIGURES],
+        helper=source("workflow/scripts/report_figure.py"),
+        code=PACKAGE,
+    output:
+        ensure(
+            report(
+                "results/film.html",
+                caption="../report/film.rst",
+                category="What a film can tell",
+            ),
+            non_empty=True,
+        ),
+    log:
+        "logs/film_page.log",
+    benchmark:
+        "logs/benchmarks/film_page.tsv"
+    conda:
+        "../envs/turntable.yaml"
+    params:
+        names=FILM_FIGURES,
+    script:
+        "../scripts/film_page.py"

@@ -39,6 +39,7 @@ rule figure_gallery:
         captions=[source(f"workflow/report/{name}.rst") for name in FIGURE_NAMES],
         animation="figures/animation.gif",
         animation_caption=source("workflow/report/animation.rst"),
+        helper=source("workflow/scripts/report_figure.py"),
     output:
         ensure(
             report(

@@ -2,46 +2,33 @@
 
 Run by rule ``figure_gallery`` (workflow/rules/report.smk); the page is part of the HTML
 report (category "Overview"), where otherwise a figure's caption shows only beside the
-figure opened on its own. Captions are the report's own (workflow/report/<figure>.rst,
-Jinja templates of the configuration, rendered as Snakemake renders them, then RST to HTML
-with docutils, which stops at any warning); the PNGs are embedded, so the page is self-contained.
+figure opened on its own. Each figure is drawn with its caption by
+workflow/scripts/report_figure.py, embedded, so the page is self-contained.
 """
 
-import base64
-import html
 import logging
 import os
 from pathlib import Path
-from types import SimpleNamespace
 
-import jinja2
-from docutils.core import publish_parts
+from report_figure import figure_html
 
 logging.basicConfig(filename=snakemake.log[0], level=logging.INFO, filemode="w")
-context = SimpleNamespace(config=snakemake.config)
-
-
-def section(name: str, image: str, rst: str, mime: str) -> str:
-    """One <figure>: the image embedded, then the caption rendered from its template."""
-    text = jinja2.Template(Path(rst).read_text(encoding="utf-8")).render(snakemake=context)
-    # A caption docutils cannot read (an undefined |substitution|, a broken role) stops the job.
-    caption = publish_parts(text, writer="html", settings_overrides={"halt_level": 2})
-    data = base64.b64encode(Path(image).read_bytes()).decode("ascii")
-    return (
-        f'<figure id="{name}"><img src="data:{mime};base64,{data}" alt="{name}">'
-        f"<figcaption><b>{html.escape(name)}</b> (<code>{image}</code>, drawn by "
-        f"<code>scripts/{name}.py</code>). {caption['body']}</figcaption></figure>"
-    )
 
 
 # The animation first (the report's viewer offers a GIF only as a download), then the figures.
 sections = [
-    section("animation", snakemake.input.animation, snakemake.input.animation_caption, "image/gif")
+    figure_html(
+        "animation",
+        snakemake.input.animation,
+        snakemake.input.animation_caption,
+        "image/gif",
+        snakemake.config,
+    )
 ]
 for name, png, rst in zip(
     snakemake.params.names, snakemake.input.pngs, snakemake.input.captions, strict=True
 ):
-    sections.append(section(name, png, rst, "image/png"))
+    sections.append(figure_html(name, png, rst, "image/png", snakemake.config))
 page = (
     '<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8"><title>Figures</title>'
     "<style>body{font-family:sans-serif;font-size:14px;max-width:60em;margin:auto}"

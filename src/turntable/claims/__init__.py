@@ -107,8 +107,8 @@ def evaluate(claim_id: str, params: Mapping[str, Any] | None = None) -> dict[str
     dict
         ``id, source, where (section, equations, figure, label), claim,
         paper_value, method, reproduced, tolerance, summary, evidence,
-        verdict``, with plain Python values and floats rounded to 12
-        significant digits.
+        verdict, expected, gist``, with plain Python values and floats rounded
+        to 12 significant digits.
     """
     claim = get(claim_id)
     p = resolve_params(params)
@@ -133,6 +133,8 @@ def evaluate(claim_id: str, params: Mapping[str, Any] | None = None) -> dict[str
             "summary": outcome.summary,
             "evidence": outcome.evidence,
             "verdict": outcome.verdict,
+            "expected": claim.expected,
+            "gist": claim.gist,
         }
     )
 

@@ -72,6 +72,10 @@ def _no_slip_run(z0: NDArray[np.float64], k: float, t: NDArray[np.float64]) -> d
         "package's no-slip motion with the same samples."
     ),
     expected="refined",
+    gist=(
+        "without slipping the centre circles at a constant rate, but the ball's angular "
+        "velocity is not constant"
+    ),
 )
 def _no_slip_motion(p: dict[str, Any]) -> Outcome:
     worst = {"radius": 0.0, "rate": 0.0, "speed": 0.0, "package": 0.0}
@@ -226,6 +230,10 @@ def _persistent_slip(mu0: float, k: float) -> float:
         "the growing mode; follow the growth per turn and the slip as mu0 -> 0."
     ),
     expected="confirmed",
+    gist=(
+        "the friction enters only as mu0 = mu0_dim/(m Omega): a faster plane means a "
+        "smaller mu0, farther from rolling without slipping"
+    ),
 )
 def _scaling(p: dict[str, Any]) -> Outcome:
     k = p["k_paper"]

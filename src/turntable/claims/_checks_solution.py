@@ -38,6 +38,10 @@ def _states(p: dict[str, Any]) -> list[np.ndarray]:
         "with frequency beta"
     },
     expected="refined",
+    gist=(
+        "the growing and decaying parts oscillate with the same frequency but turn in "
+        "opposite senses"
+    ),
     method=(
         "Split the solution with the package and check against independent facts: the sum "
         "equals exp(L t) z0; the constant part lies in the kernel; each oscillating part lies "
@@ -155,11 +159,13 @@ def _decomposition(p: dict[str, Any]) -> Outcome:
         "before vx(0))."
     ),
     paper_value={
-        "text": "y0 = (k wy(0) - vx(0))/k as printed; Fig. 4 marks (x0, y0) = (0, 1)",
+        "text": "y0 = (k wy(0) - vx(0))/k as the printed (2.8) appears to read (only a text "
+        "extraction of the formula was available); Fig. 4 marks (x0, y0) = (0, 1)",
         "x0_fig4": 0.0,
         "y0_fig4": 1.0,
     },
     expected="corrected",
+    gist="the spiral centre, the paper's (2.8), needs a plus sign in front of vx(0) in y0",
     method=(
         "Project z0 on ker L along the range of L (least squares, no formula) for every k, "
         "several mu0 and generic states with vx(0) != 0; compare with the package, with the "
@@ -247,7 +253,11 @@ def _centre(p: dict[str, Any]) -> Outcome:
         "|alpha2|/beta > 1, so N > exp(2 pi), about 535, for every mu0 and k."
     ),
     paper_value={"text": "N > exp(2 pi) ~ 535", "N_bound": 535.0},
-    expected="refined",
+    expected="confirmed",
+    gist=(
+        "the damping factor per period exceeds exp(2 pi), a sharp bound approached only "
+        "as the friction vanishes"
+    ),
     method=(
         "The closed form decides it: with a = cosh s, b = sinh s (a^2 - b^2 = 1, "
         "a^2 + b^2 = sqrt(1 + eps^2), so s = arsinh(eps)/2), |alpha2|/beta = (a + 1)/b = "
@@ -321,25 +331,23 @@ def _damping(p: dict[str, Any]) -> Outcome:
         "max_closed_form_ratio_error_rel": 1e-20,
         "max_package_ln_n_error_rel": 1e-12,
     }
-    sharp_tol = {
+    # The bound is sharp (an infimum, approached as mu0 -> 0): what the closed form says, so
+    # a grid that disagrees means a wrong model.
+    tol |= {
         "ln_n_increasing_in_mu0": {"==": True},
         "excess_at_smallest_mu0": 1e-3,
         "max_excess_leading_term_error_rel": 1e-3,
     }
-    holds = all_within(reproduced, tol)
-    sharp = all_within(reproduced, sharp_tol)
-    verdict = "failed" if not holds else ("refined" if sharp else "confirmed")
-    if verdict == "refined":  # what makes it refined: the bound is an infimum
-        tol |= sharp_tol
+    verdict = "confirmed" if all_within(reproduced, tol) else "failed"
     evidence = {
         "failed": (
             "The ratio |alpha2|/beta falls to 1 or below somewhere, (2.10) or its closed form "
-            "is wrong, or the package's ln N disagrees with 2 pi |alpha2|/beta from the 40-digit "
-            "eigenvalues."
+            "is wrong, the package's ln N disagrees with 2 pi |alpha2|/beta from the 40-digit "
+            "eigenvalues, or ln N does not fall to 2 pi as the closed form says."
         ),
-        "confirmed": "The bound holds on the grid for every k tried.",
-        "refined": (
-            "The bound holds, but it is an infimum that is never reached. The closed form "
+        "confirmed": (
+            "The bound holds as printed, for every mu0 and k. The reproduction adds that it is "
+            "sharp: an infimum that is never reached. The closed form "
             "|alpha2|/beta = coth(arsinh(eps)/4) (equal to (2.10) and to the 40-digit "
             "eigenvalues at every probe) decreases strictly in eps, so ln N increases strictly "
             "with mu0 for every k > 0, and tends to 2 pi only as mu0 -> 0, where "
@@ -391,6 +399,10 @@ def _periods_above(
         "periods": 1.0,
     },
     expected="refined",
+    gist=(
+        "the decaying part is negligible after one period for the states of the paper and "
+        "for generic states, not for states close to the decaying subspace"
+    ),
     method=(
         "For the state of Fig. 3 and generic states, every k and the mu0 of Fig. 3 and the "
         "reference mu0, find the last time at which |z-| exceeds 1% of |z+|, in periods; "
@@ -403,9 +415,11 @@ def _fast_transient(p: dict[str, Any]) -> Outcome:
     threshold = 0.01
     worst_fig3, worst_generic, worst_near, predicted_near = 0.0, 0.0, 0.0, 0.0
     fig3_k_paper: list[float] = []
+    near_k_paper: list[float] = []
+    mu0_all = sorted(set(p["mu0_fig3"]) | set(p["mu0_reference"]))
     min_log_contraction = np.inf
     for k in p["k_values"]:
-        for mu0 in sorted(set(p["mu0_fig3"]) | set(p["mu0_reference"])):
+        for mu0 in mu0_all:
             log_contraction = float(tt.log_growth_per_turn(mu0, k) + tt.log_damping_ratio(mu0, k))
             min_log_contraction = min(min_log_contraction, log_contraction)
             for i, z0 in enumerate(_states(p)[1:]):
@@ -420,6 +434,8 @@ def _fast_transient(p: dict[str, Any]) -> Outcome:
             scale = np.linalg.norm(m0.minus) / np.linalg.norm(m0.plus) / NEAR_DECAYING_RATIO
             z_near = (m0.centre + m0.minus + scale * m0.plus)[0]
             prediction = np.log(NEAR_DECAYING_RATIO / threshold) / log_contraction
+            if k == p["k_paper"]:
+                near_k_paper.append(_periods_above(z_near, mu0, k, threshold, prediction + 1.0))
             if prediction > worst_near:
                 worst_near = _periods_above(z_near, mu0, k, threshold, prediction + 1.0)
                 predicted_near = float(prediction)
@@ -430,6 +446,8 @@ def _fast_transient(p: dict[str, Any]) -> Outcome:
         "last_time_above_threshold_fig3_periods": worst_fig3,
         "last_time_above_threshold_generic_periods": worst_generic,
         "near_decaying_initial_ratio": NEAR_DECAYING_RATIO,
+        "mu0_near_decaying": mu0_all,
+        "last_time_above_threshold_near_decaying_periods_k_paper": near_k_paper,
         "last_time_above_threshold_near_decaying_periods": worst_near,
         "predicted_near_decaying_periods": predicted_near,
         "near_decaying_prediction_error_periods": abs(worst_near - predicted_near),
@@ -470,9 +488,13 @@ def _fast_transient(p: dict[str, Any]) -> Outcome:
             f"{', '.join(sig(m) for m in p['mu0_fig3'])}; at most {sig(worst_fig3, 2)} over "
             f"every k tried){generic_text}, but not for every initial state: |z-|/|z+| shrinks by "
             "exp(-2 pi (alpha1 + |alpha2|)/beta) per period, so the transient lasts about "
-            "ln(|z-(0)|/(0.01 |z+(0)|)) / (2 pi (alpha1 + |alpha2|)/beta) periods, which is "
-            f"{sig(worst_near, 2)} periods for a state with |z-(0)|/|z+(0)| = 1e9, and forever "
-            "on the decaying subspace z+ = 0, where the ball spirals into the centre."
+            "ln(|z-(0)|/(0.01 |z+(0)|)) / (2 pi (alpha1 + |alpha2|)/beta) periods. For a "
+            f"state with |z-(0)|/|z+(0)| = 1e9 and k = {sig(p['k_paper'])} it lasts "
+            f"{', '.join(sig(x, 3) for x in near_k_paper)} periods at mu0 = "
+            f"{', '.join(sig(m) for m in mu0_all)}, and at most {sig(worst_near, 3)} periods "
+            "over every k and mu0 tried (the longest where the contraction per period is "
+            "weakest); on the decaying subspace z+ = 0 it lasts forever, and the ball spirals "
+            "into the centre."
         ),
     }[verdict]
     return Outcome(
@@ -480,11 +502,13 @@ def _fast_transient(p: dict[str, Any]) -> Outcome:
         reproduced=reproduced,
         tolerance=tol,
         summary=(
-            f"|z-| < 1% of |z+| after {', '.join(sig(x, 2) for x in fig3_k_paper)} period "
-            f"(Fig. 3, k = {sig(p['k_paper'])}, mu0 = "
-            f"{', '.join(sig(m) for m in p['mu0_fig3'])}); largest over every k and mu0 tried: "
-            f"{sig(worst_fig3, 2)} (Fig. 3), {sig(worst_generic, 2)} (generic states), "
-            f"{sig(worst_near, 3)} (|z-|/|z+| = 1e9 at t = 0)"
+            f"k = {sig(p['k_paper'])}: |z-| < 1% of |z+| after "
+            f"{', '.join(sig(x, 2) for x in fig3_k_paper)} of a period (Fig. 3, mu0 = "
+            f"{', '.join(sig(m) for m in p['mu0_fig3'])}), after "
+            f"{', '.join(sig(x, 3) for x in near_k_paper)} periods from |z-|/|z+| = 1e9 "
+            f"(mu0 = {', '.join(sig(m) for m in mu0_all)}); largest over every k and mu0 "
+            f"tried: {sig(worst_fig3, 2)} (Fig. 3), {sig(worst_generic, 2)} (generic states), "
+            f"{sig(worst_near, 3)} (|z-|/|z+| = 1e9)"
         ),
         evidence=evidence,
     )
@@ -502,6 +526,7 @@ def _fast_transient(p: dict[str, Any]) -> Outcome:
         "radius ~ exp(alpha1 t) by (2.7)"
     },
     expected="confirmed",
+    gist="the outward logarithmic spiral about (x0, y0)",
     method=(
         "For the state of Fig. 4, every k and the mu0 of Fig. 4, take exp(L t) z0 over two to "
         "five periods, the centre from the kernel projection, and fit ln|r - r0| and the "
@@ -584,6 +609,9 @@ def _shape(values: np.ndarray, mu0: np.ndarray, mu0_peak: float) -> tuple[bool, 
     claim="As mu0 grows the spiral untwists more and more slowly.",
     paper_value={"text": "the untwisting slows appreciably as mu0 grows (qualitative, Fig. 4)"},
     expected="refined",
+    gist=(
+        "the untwisting slows with friction per turn for every mu0, per unit time only above mu0*"
+    ),
     method=(
         "The closed form decides the per-turn statement: the radius grows per turn by "
         "exp(2 pi alpha1/beta) with alpha1/beta = (a - 1)/b = tanh(arsinh(eps)/4) (a = cosh s, "

@@ -253,6 +253,10 @@ class Claim:
     source : str
         ``"paper"`` for a claim of the paper, ``"project"`` for one the
         reproduction adds.
+    gist : str
+        What the check establishes, in a few words, when it reaches the ``expected``
+        verdict (the article lists claims by verdict with this line; with another
+        verdict it shows the ``summary`` instead).
     """
 
     id: str
@@ -263,6 +267,7 @@ class Claim:
     check: Callable[[dict[str, Any]], Outcome] = field(repr=False)
     expected: Verdict = "confirmed"
     source: str = "paper"
+    gist: str = ""
 
     def label(self) -> str:
         """Return the location; an addition of the reproduction is marked as such."""
@@ -282,13 +287,16 @@ def register(
     paper_value: dict[str, Any],
     method: str,
     expected: Verdict,
+    gist: str = "",
     source: str = "paper",
 ) -> Callable[[Callable[[dict[str, Any]], Outcome]], Callable[[dict[str, Any]], Outcome]]:
     """Decorator that adds a check function to the registry under ``id``.
 
     The order of registration is the order of the report (the paper's order): the
     check modules are imported in the paper's order and register their claims in it.
-    ``expected`` is the verdict the tests require of the check.
+    ``expected`` is the verdict the tests require of the check; ``gist`` what it
+    establishes then, in a few words (see `Claim`). Everything the report, the tests and
+    the article say of a claim comes from here: adding a claim is one call.
     """
     if expected not in VERDICTS:
         raise ValueError(f"expected verdict of {id!r} must be one of {VERDICTS}; got {expected!r}")
@@ -296,11 +304,13 @@ def register(
         raise ValueError(f"source of {id!r} must be 'paper' or 'project'; got {source!r}")
     if not paper_value or not paper_value.get("text"):
         raise ValueError(f"paper_value of {id!r} must state what the paper says, as 'text'")
+    if not gist.strip():
+        raise ValueError(f"gist of {id!r} must say in a few words what the check establishes")
 
     def wrap(fn: Callable[[dict[str, Any]], Outcome]) -> Callable[[dict[str, Any]], Outcome]:
         if id in _REGISTRY:
             raise ValueError(f"claim id {id!r} registered twice")
-        _REGISTRY[id] = Claim(id, where, claim, paper_value, method, fn, expected, source)
+        _REGISTRY[id] = Claim(id, where, claim, paper_value, method, fn, expected, source, gist)
         return fn
 
     return wrap

@@ -209,6 +209,93 @@ def to_markdown(report: Mapping[str, Any]) -> str:
     return "\n".join(lines) + "\n"
 
 
+_GREEK = {
+    "alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "eps": "ε", "lambda": "λ",
+    "mu": "μ", "nu": "ν", "pi": "π", "rho": "ρ", "sigma": "σ", "phi": "φ", "omega": "ω",
+    "Omega": "Ω", "infinity": "∞",
+}  # fmt: skip
+_SYMBOLS = {"<=": "≤", ">=": "≥", "->": "→", "+-": "±", "-+": "∓", "!=": "≠", "~": "∼"}
+#: One token of the registry's plain-text mathematics (the same forms as the article's
+#: ascii-math rule in paper/values.typ): exp(2 pi), 6.9e-25, ^-2 and ^(3/2), x0 and mu0*,
+#: alpha1, sigma_g and lambda_{1,2}, vx and wy, z+ and z-, sqrt, the symbols, and a minus
+#: between spaces.
+_MATH_TOKEN = re.compile(
+    r"exp\(2 pi\)"
+    r"|\b\d(?:\.\d+)?e[-+]?\d+\b"
+    r"|\^(?:\([^()]*\)|[-+]?\d+(?:\.\d+)?)"
+    r"|(?<![\w.])(?:" + "|".join(sorted(_GREEK, key=len, reverse=True)) + r")\d*"
+    r"(?:_(?:c|g|h|dim)\b|_\{[^}]*\})?\*?(?![\w.])"
+    r"|(?<![\w.])[xyzr]0\*?(?![\w.])"
+    r"|(?<![\w.])[vw][xyz](?![\w.])"
+    r"|(?<![\w.])z[+-](?=[\s,.;:)|]|$)"
+    r"|\bsqrt\(|<=|>=|->|\+-|-\+|!=|~| - "
+)
+
+
+def _minus(text: str) -> str:
+    return text.replace("-", "\u2212")
+
+
+def _math_html(token: str) -> str:
+    """HTML of one token of `_MATH_TOKEN` (letters, subscripts, superscripts)."""
+    from html import escape
+
+    if token == "exp(2 pi)":
+        return "e<sup>2π</sup>"
+    if token == " - ":
+        return " \u2212 "
+    if token == "sqrt(":
+        return "√("
+    if token in _SYMBOLS:
+        return _SYMBOLS[token]
+    if token.startswith("^"):
+        power = token[1:].strip("()").replace(" ", "")
+        power = re.sub(r"[A-Za-z]+", lambda m: _GREEK.get(m[0], m[0]), power)
+        return f"<sup>{escape(_minus(power))}</sup>"
+    if re.fullmatch(r"\d(?:\.\d+)?e[-+]?\d+", token):
+        mantissa, exponent = token.split("e")
+        power = f"10<sup>{_minus(str(int(exponent)))}</sup>"
+        return power if mantissa == "1" else f"{mantissa}×{power}"
+    if re.fullmatch(r"z[+-]", token):
+        return f"z<sub>{_minus(token[1])}</sub>"
+    if re.fullmatch(r"[vw][xyz]", token):
+        return f"{'ω' if token[0] == 'w' else 'v'}<sub>{token[1]}</sub>"
+    m = re.fullmatch(r"([A-Za-z]+)(\d*)(?:_(c|g|h|dim|\{[^}]*\}))?(\*?)", token)
+    assert m is not None, token
+    name, digits, sub, star = m.groups()
+    out = _GREEK.get(name, name)
+    if digits:
+        out += f"<sub>{digits}</sub>"
+    if sub:
+        sub = sub.strip("{}")
+        out += f"<sup>{sub}</sup>" if sub == "dim" else f"<sub>{sub}</sub>"
+    return out + ("<sup>*</sup>" if star else "")
+
+
+def html_math(text: str) -> str:
+    """Escape ``text`` for HTML and typeset its plain-text mathematics.
+
+    The registry writes mathematics in plain text (``mu0^-2``, ``exp(2 pi)``,
+    ``|alpha2|/beta``, ``x0``, ``<=``); here Greek names become letters, indices
+    subscripts, powers superscripts and ``1e-06`` becomes 10<sup>−6</sup>. Words that
+    are not mathematics, and identifiers such as ``spectrum.alpha1_peak``, are left as
+    they are.
+
+    Examples
+    --------
+    >>> html_math("N > exp(2 pi) ~ 535 for mu0 -> 0")
+    'N &gt; e<sup>2π</sup> ∼ 535 for μ<sub>0</sub> → 0'
+    """
+    from html import escape
+
+    out, last = [], 0
+    for m in _MATH_TOKEN.finditer(text):
+        out += [escape(text[last : m.start()]), _math_html(m[0])]
+        last = m.end()
+    out.append(escape(text[last:]))
+    return "".join(out)
+
+
 def _code_ids(text: str) -> str:
     """HTML: the `id` spans of a summary line as <code> elements."""
     return re.sub(r"`([^`]+)`", r"<code>\1</code>", text)
@@ -239,9 +326,9 @@ def to_html(report: Mapping[str, Any]) -> str:
             f"<code>{escape(cid)}</code>"
             + (" <i>(addition)</i>" if c["source"] == "project" else ""),
             escape(str(c["where"]["label"])),
-            escape(str(c["claim"])),
-            escape(_paper_value(c["paper_value"])),
-            escape(str(c["summary"])),
+            html_math(str(c["claim"])),
+            html_math(_paper_value(c["paper_value"])),
+            html_math(str(c["summary"])),
             f'<b style="color:{colour}">{escape(c["verdict"])}</b>',
         )
         rows.append("<tr>" + "".join(f"<td>{x}</td>" for x in cells) + "</tr>")

@@ -1,5 +1,10 @@
 """Claims of Section 3: the limit of large friction mu0 -> infinity.
 
+What is tested: the expansion (3.2) (`turntable.large_friction_expansion`, of
+turntable.spectrum) and the convergence to the no-slip motion (`turntable.nonholonomic`,
+`turntable.no_slip_state`, of turntable.solution).  The module turntable.limits (small
+friction, the no-slip period, the limit's error) is tested in tests/test_limits.py.
+
 References: the 60-digit roots of the characteristic polynomial (mpmath),
 the expansion (3.2) written out in mpmath, and the no-slip motion checked
 against its defining properties (no slip, conserved quantities, dr/dt = v).

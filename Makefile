@@ -26,10 +26,12 @@ SNAKEMAKE = $(if $(CONFIGFILE),$(BIN)/python workflow/config_checks.py $(CONFIGF
 
 .PHONY: all setup test lint bench mutants lock clean notebooks report readme-figure
 
-# The HTML report is rewritten only when an output it shows is newer than it, so that a
-# second `make` does nothing.
-REPORT := if [ ! -f results/report.html ] || [ -n "$$(find figures results/study \
-	results/claims.json -newer results/report.html -print -quit 2>/dev/null)" ]; then \
+# The HTML report is rewritten only when a file it is made from is newer than it (an output
+# it shows, a caption of workflow/report/, a rule or script, the configuration), so that a second
+# `make` does nothing. (results/benchmarks.json, which .ci/run writes after make, is not in it.)
+REPORT := if [ ! -f results/report.html ] || [ -n "$$(find figures results workflow scripts config \
+	-newer results/report.html ! -path results/report.html ! -path results/benchmarks.json \
+	! -path "*/__pycache__/*" -type f -print -quit 2>/dev/null)" ]; then \
 	$(SNAKEMAKE) --report results/report.html; else echo "results/report.html is up to date"; fi
 
 all: $(BUILD_STAMP)

@@ -76,3 +76,22 @@ def notebook(name, **wildcards):
 # {"input": {...}, "output": {...}, "params": {...}}, filled by the rules files included
 # before figures.smk (film.smk).
 FIGURE_EXTRAS = {}
+
+
+def _git_state():
+    """(commit, dirty) of the checkout, by turntable.provenance.git_state, loaded from its
+    file alone: importing the package would import numpy and scipy in every Snakemake run."""
+    from importlib.util import module_from_spec, spec_from_file_location
+
+    spec = spec_from_file_location("_provenance", ROOT / "src/turntable/provenance.py")
+    provenance = module_from_spec(spec)
+    spec.loader.exec_module(provenance)
+    commit, dirty = provenance.git_state(ROOT)
+    return f"{commit}{' (dirty)' if dirty else ''}"
+
+
+# The commit of the checkout and whether its tree is dirty, as a param of the jobs that print
+# them (the article): a new commit, or a tree that becomes dirty or clean, reruns them
+# (Snakemake reruns a job whose params changed), so the commit printed is the one that
+# built the output.
+GIT_STATE = _git_state()

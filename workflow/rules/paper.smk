@@ -30,5 +30,8 @@ rule paper:
         main="paper.typ",
         timestamp=config["paper"]["timestamp"],
         repository=config["paper"]["repository"],
+        # not read by the script (it records its own provenance): reruns the job when the
+        # commit or the dirty state changes
+        git_state=GIT_STATE,
     script:
         NOTEBOOK_DRIVER

@@ -111,15 +111,27 @@ def moving_rms(values: np.ndarray, window: int) -> np.ndarray:
 
 
 def draw_paths(ax: Any, film: Film, result: dict[str, Any], n_curve: int = 3000) -> None:
-    """Draw the tracked positions (mm) and the path of each fitted model on ``ax``."""
+    """Draw the tracked positions (mm) and the path of each fitted model on ``ax``.
+
+    The selected model is drawn last, solid, over the other one, dashed: where the two
+    paths coincide the selected one stays visible and the other shows through its gaps.
+    """
     t = np.linspace(film.t[0], film.t[-1], max(n_curve, film.t.size))
     ax.plot(1e3 * film.x, 1e3 * film.y, ".", color="0.6", ms=1.5, label="data")
-    for model in MODELS:
+    selected = result.get("selected")
+    for model in sorted(MODELS, key=lambda m: m == selected):
         if not _drawable(result, model):
             continue
         xy = fitted_positions(result, model, t)
         color, _ = STYLE[model]
-        ax.plot(1e3 * xy[:, 0], 1e3 * xy[:, 1], color=color, lw=0.8, label=_label(result, model))
+        ax.plot(
+            1e3 * xy[:, 0],
+            1e3 * xy[:, 1],
+            color=color,
+            lw=0.8,
+            ls="-" if selected in (None, model) else (0, (4, 2)),
+            label=_label(result, model),
+        )
     axis = result["setup"]["axis_m"]
     ax.plot(1e3 * axis[0], 1e3 * axis[1], "k+", ms=8, label="axis")
     ax.set(aspect="equal", xlabel="$x$ (mm)", ylabel="$y$ (mm)")

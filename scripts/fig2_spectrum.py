@@ -46,7 +46,7 @@ ax.plot(
     lw=1.0,
     label=r"small $\mu_0$: $\beta \approx \sqrt{\mu_0/2}$",
 )
-ax.plot([], [], "k--", lw=0.7, label=r"large $\mu_0$: first terms in $1/\mu_0$")
+ax.plot([], [], "k--", lw=0.7, label=r"large $\mu_0$: series in $1/\mu_0$")
 ax.plot(peak.mu0, peak.alpha1, "o", color="C0", ms=4)
 ax.annotate(
     rf"max $\alpha_1 = {peak.alpha1:.4f}$" + "\n" + rf"at $\mu_0 = {peak.mu0:.4f}$",
@@ -56,5 +56,5 @@ ax.annotate(
 )
 ax.set(xscale="log", yscale="log", xlabel=r"friction $\mu_0$ (units of $m\Omega$)")
 ax.set(ylabel=r"rate (units of $\Omega$)", title=rf"$k = {k:g}$")
-ax.legend(loc="upper left", ncols=2)
+ax.legend(loc="upper left", ncols=1)
 save(fig, snakemake)

@@ -33,14 +33,14 @@ roll = rolling.solve(z0, t, delta, p.k)
 centre_r = rolling.spiral_centre(z0, t, delta, p.k)
 name = p.comparison.replace("_", " ")
 runs = [
-    (ax_s, slip, centre_s, "C0", rf"slipping, $\mu_0 = {p.mu0:g}$"),
-    (ax_r, roll, centre_r, "C3", rf"rolling, $\delta = {delta:.4g}$ ({name})"),
+    (ax_s, slip, centre_s, "C0", rf"slipping, $\mu_0 = {p.mu0:g}$", "slipping"),
+    (ax_r, roll, centre_r, "C3", rf"rolling, $\delta = {delta:.3g}$ ({name})", "rolling"),
 ]
 # Both paths on the same scale, so that the panels have the same size and can be compared.
 xy = np.concatenate([slip[:, :2], roll[:, :2]])
 pad = 0.05 * np.ptp(xy, axis=0).max()
 lims = [(lo - pad, hi + pad) for lo, hi in zip(xy.min(axis=0), xy.max(axis=0), strict=True)]
-for ax, z, c, color, title in runs:
+for ax, z, c, color, title, short in runs:
     ax.plot(z[:, 0], z[:, 1], color=color, lw=0.8)
     ax.plot(c[:, 0], c[:, 1], "k--", lw=1.0, label="spiral centre over time")
     ax.plot(*c[-1], "ko", ms=4, label=f"spiral centre at $t\\Omega = {t[-1]:g}$")
@@ -48,11 +48,11 @@ for ax, z, c, color, title in runs:
     ax.plot(0, 0, "k+", ms=8, label="axis")
     ax.set(aspect="equal", xlim=lims[0], ylim=lims[1], xlabel="$x/R$", ylabel="$y/R$")
     ax.set_title(title, fontsize=7)
-    ax_c.plot(t, np.hypot(*c.T), color=color, label=title)
+    ax_c.plot(t, np.hypot(*c.T), color=color, label=short)
 handles, labels = ax_r.get_legend_handles_labels()
-fig.legend(handles, labels, loc="upper center", ncols=4, fontsize=6, frameon=False)
+fig.legend(handles, labels, loc="upper center", ncols=4, fontsize=7, frameon=False)
 ax_c.set(xlabel=r"time $t\Omega$", ylabel="centre's distance from the axis $/R$", ylim=(0, None))
-ax_c.legend(fontsize=5.5, loc="lower left")
+ax_c.legend(fontsize=6.5, loc="lower left")
 
 # %%
 mu0 = np.logspace(*np.log10(p.mu0_range), p.n_grid)
@@ -71,13 +71,15 @@ for comparison, (color, label) in styles.items():
     time_r = rolling.growth_rate(matched, p.k)
     ax_g.loglog(mu0, turn_r, color=color, ls="--", label=f"rolling, {label}")
     ax_t.loglog(mu0, time_r, color=color, ls="--", label=f"rolling, {label}")
-    ax_q.loglog(mu0, per_turn / turn_r, color=color, label=f"{label}, per turn")
-    ax_q.loglog(mu0, per_time / time_r, color=color, ls=":", label=f"{label}, per unit time")
+    ax_q.loglog(mu0, per_turn / turn_r, color=color, label=label)
+    ax_q.loglog(mu0, per_time / time_r, color=color, ls=":")
 ax_q.axhline(1.0, color="0.5", lw=0.8)
 ax_g.set(xlabel=r"$\mu_0$", ylabel="log growth per turn")
 ax_t.set(xlabel=r"$\mu_0$", ylabel=r"growth rate per unit time $/\Omega$")
 ax_q.set(xlabel=r"$\mu_0$", ylabel="slipping / rolling")
-ax_g.legend(fontsize=5.5, loc="lower left")
-ax_q.legend(fontsize=5, loc="upper right", ncols=1)
+ax_g.legend(fontsize=6.5, loc="lower left")
+ax_q.plot([], [], "k-", label="per turn")
+ax_q.plot([], [], "k:", label="per unit time")
+ax_q.legend(fontsize=6.5, loc="upper right")
 ax_t.set_title(rf"$k = {p.k:g}$", fontsize=7)
 save(fig, snakemake)

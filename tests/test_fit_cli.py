@@ -450,15 +450,20 @@ def test_wrong_rate_warns_and_fit_omega_recovers(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     """A slipping film of a turntable 0.4 % faster than --omega: with the given rate the
-    rolling model is selected, and a warning says that with Omega free the slipping model
-    is selected;
+    rolling model is selected, by a large AICc difference but not decisively (the fit with
+    Omega free contradicts the given rate), and a warning says that with Omega free the
+    slipping model is selected;
     with --fit-omega the slipping model is selected, mu0 and Omega lie within 3 standard
     errors of the truth, and nothing is reported."""
     true = RIG._replace(omega=RIG.omega * 1.004)
     path = _rig_file(tmp_path, "slipping", 3.0, film.Camera(60.0, 2e-4, 6.0), 3, true)
     args = [str(path), "--radius", "0.005", "--omega", repr(RIG.omega)]
     lines = _warnings(run_here(capsys, *args))
-    assert json.loads(run_here(capsys, *args).stdout)["selected"] == "rolling_resistance"
+    wrong = json.loads(run_here(capsys, *args).stdout)
+    assert wrong["selected"] == "rolling_resistance"
+    assert wrong["selection"]["aicc_difference"] > fit.DECISIVE
+    assert wrong["selection"]["decisive"] is False
+    assert "rests on the given Omega" in wrong["selection"]["reason"]
     assert any("selects slipping" in line and "--fit-omega" in line for line in lines), lines
     proc = run_here(capsys, *args, "--fit-omega")
     assert _warnings(proc) == []

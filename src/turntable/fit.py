@@ -1080,6 +1080,47 @@ def consistency(
     return Consistency(refit, freed, model, omega_z, axis_z, changed)
 
 
+def checked_selection(result: FilmFit, check: Consistency | None) -> FilmFit:
+    """Return the fit with its selection not decisive where `consistency` contradicts it.
+
+    Parameters
+    ----------
+    result : FilmFit
+        The fit with the given Omega and axis.
+    check : Consistency or None
+        The same fit with them free (`consistency`).
+
+    Returns
+    -------
+    FilmFit
+        ``result`` itself, unless its selection is decisive and the check finds the given
+        Omega or axis more than `CONSISTENCY_Z` standard errors from the ones the film
+        prefers, or selects another model decisively with them free: then a copy with
+        ``decisive`` False and ``reason`` saying why.  (A wrong Omega can make the wrong
+        model win by a large AICc difference: the difference then measures the fit to the
+        wrong rate, not the evidence for the model.)
+    """
+    if check is None or not result.decisive:
+        return result
+    why = []
+    if check.selection_changed:
+        why.append(
+            f"with {' and '.join(check.freed)} free the film selects {check.refit.selected} "
+            "decisively"
+        )
+    if abs(check.omega_z) > CONSISTENCY_Z:
+        why.append(f"the given Omega is {check.omega_z:+.3g} standard errors from the film's")
+    if max(abs(v) for v in check.axis_z) > CONSISTENCY_Z:
+        why.append(f"the given axis is more than {CONSISTENCY_Z:g} standard errors from the film's")
+    if not why:
+        return result
+    reason = (
+        f"the selection of {result.selected} is not decisive: it rests on the given Omega or "
+        f"axis, which the film contradicts ({'; '.join(why)})"
+    )
+    return result._replace(decisive=False, reason=reason)
+
+
 def problems(
     result: FilmFit, film: Film, setup: Setup, check: Consistency | None = None
 ) -> list[str]:
@@ -1102,7 +1143,8 @@ def problems(
         not converge; each coefficient at a bound of `BOUNDS`, with its one-sided limit;
         each fitted Omega at the end of its range; a selection that is not decisive or not
         made (`FilmFit.reason`); a relative standard error above `LINEAR_RELATIVE_ERROR`
-        of the selected model (of each, with none selected); residuals of the selected
+        of the selected model (of each, with none selected or a selection that is not
+        decisive, `checked_selection`); residuals of the selected
         model (or, with none selected,
         of the better fit) that are not white noise (`whiteness`), which means that
         neither model fits to the noise level; with ``check``, a given Omega or axis more
@@ -1147,7 +1189,9 @@ def problems(
             )
     if result.reason:
         out.append(result.reason)
-    for model in [result.selected] if result.selected else list(result.fits):
+    # the relative error of the selected model; of both where the selection is not decisive
+    shown = checked_selection(result, check)
+    for model in [shown.selected] if shown.selected and shown.decisive else list(result.fits):
         f = result.fits[model]
         if f.bound is None and f.log_stderr > LINEAR_RELATIVE_ERROR:
             out.append(
@@ -1237,17 +1281,20 @@ def result_json(
     fits = result.fits
     fit_omega = any(math.isfinite(f.omega_stderr) for f in fits.values())
     fit_axis = math.isfinite(fits["rolling_resistance"].axis_stderr[0])
+    shown = checked_selection(result, check)
     out: dict[str, Any] = {
         "selected": result.selected,
         "selection": {
             "criterion": (
                 "AICc = N ln(RSS/N) + 2 K + 2 K (K + 1) / (N - K - 1), K = p + 1; decisive "
-                f"from a difference of {DECISIVE:g}; no selection if N - K - 1 < {MIN_DOF}"
+                f"from a difference of {DECISIVE:g}, unless the fit with Omega and the axis "
+                f"free contradicts the given ones (|z| > {CONSISTENCY_Z:g}) or selects the "
+                f"other model; no selection if N - K - 1 < {MIN_DOF}"
             ),
             "aicc_difference": _finite(result.aicc_difference),
             "akaike_weights": {m: _finite(w) for m, w in result.akaike_weights.items()},
-            "decisive": bool(result.decisive),
-            "reason": result.reason or None,
+            "decisive": bool(shown.decisive),
+            "reason": shown.reason or None,
         },
     }
     for model, f in fits.items():

@@ -25,6 +25,7 @@ def _report(verdicts: dict[str, str], added: tuple[str, ...] = ()) -> dict:
             "verdict": v,
             "source": "project" if c in added else "paper",
             "summary": f"value of {c} " + "x" * 200,
+            "gist": f"what {c} means " + "word " * 40,
         }
         for c, v in verdicts.items()
     ]
@@ -68,6 +69,10 @@ def test_lists_every_claim_that_is_not_confirmed(tmp_path: Path) -> None:
     ) in lines
     listed = [line for line in lines if re.match(r"  [a-z]+ +[a-z]\.", line)]
     assert [line.split()[:2] for line in listed] == [["refined", "b.two"], ["failed", "c.three"]]
+    # each with its gist, whole, wrapped under the start of the text
+    text = out.split("  failed ")[1].split("full table")[0]
+    assert " ".join(text.split()[1:]) == ("what c.three means " + "word " * 40).strip()
+    assert re.search(r"\n {10,}word", out)
     # no Python dict or list printed as such
     assert not re.search(r"[{}\[\]]|': ", out)
     assert all(len(line) <= 110 for line in lines)
@@ -106,7 +111,8 @@ def test_any_verdict_other_than_confirmed_is_listed(verdict: str) -> None:
     ],
 )
 def test_a_long_summary_is_never_cut_inside_a_number(summary: str) -> None:
-    """A cut line ends with " ..." after a whole word or clause, at most 110 characters."""
+    """(For a report without gists.) A cut line ends with " ..." after a whole word or
+    clause, at most 110 characters."""
     spec = importlib.util.spec_from_file_location("build_summary", TOOL)
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)

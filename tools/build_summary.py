@@ -1,4 +1,5 @@
-"""Print the short summary that ends `make`: verdict counts, every claim not confirmed, paths.
+"""Print the short summary that ends `make`: verdict counts, every claim not confirmed with
+what its verdict means (the registry's gist), paths.
 
 Usage: ``python tools/build_summary.py [results/claims.json] [results/study/summary.json]``.
 Reads only the outputs of the build (the claims report and the study summary); a missing
@@ -9,6 +10,7 @@ from __future__ import annotations
 
 import json
 import sys
+import textwrap
 from pathlib import Path
 
 WIDTH = 110
@@ -36,8 +38,9 @@ def shorten(line: str, width: int = WIDTH) -> str:
 
 
 def claims_lines(report: dict, table: str = "results/claims.md") -> list[str]:
-    """Verdict counts (all, then the paper's apart from the additions), then one line per
-    claim whose verdict is not 'confirmed', then where the full table is."""
+    """Verdict counts (all, then the paper's apart from the additions), then each claim
+    whose verdict is not 'confirmed' with its gist (wrapped to `WIDTH`), then where the full
+    table is."""
     claims = [report["claims"][cid] for cid in report["order"]]
     order = list(report["summary"].get("verdicts", []))
     verdicts = [c["verdict"] for c in claims]
@@ -55,8 +58,20 @@ def claims_lines(report: dict, table: str = "results/claims.md") -> list[str]:
     for cid, claim in zip(report["order"], claims, strict=True):
         if claim["verdict"] == "confirmed":
             continue
-        line = f"  {claim['verdict']:<11} {cid:<{width}}  {claim['summary']}"
-        lines.append(shorten(line))
+        # what the verdict means for this claim, in words (the registry's gist), whole and
+        # wrapped; a report without gists shows the summary of the numbers, cut
+        head = f"  {claim['verdict']:<11} {cid:<{width}}  "
+        if claim.get("gist"):
+            lines += textwrap.wrap(
+                claim["gist"],
+                WIDTH,
+                initial_indent=head,
+                subsequent_indent=" " * len(head),
+                break_long_words=False,
+                break_on_hyphens=False,
+            )
+        else:
+            lines.append(shorten(head + claim["summary"]))
     lines.append(f"full table: {table} (and in results/report.html); article: paper/paper.pdf")
     return lines
 

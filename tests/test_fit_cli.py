@@ -334,6 +334,38 @@ def test_good_file_passes_the_checks(tmp_path: Path, capsys: pytest.CaptureFixtu
     assert any("no model selected" in line for line in lines)
 
 
+SPREADSHEET_VARIANTS = {
+    "quoted header": '"t","x","y"\n' + GOOD.split("\n", 1)[1],
+    "quoted values": GOOD.replace("0.05,", '"0.05",'),
+    "tab-separated": GOOD.replace(",", "\t"),
+    "semicolon-separated, extra column": "\n".join(
+        line.replace(",", ";") + (";id" if i == 0 else f";frame {i}")
+        for i, line in enumerate(GOOD.splitlines())
+    ),
+}
+
+
+@pytest.mark.parametrize("case", list(SPREADSHEET_VARIANTS))
+def test_spreadsheet_variants_read_the_same_film(tmp_path: Path, case: str) -> None:
+    """Quoted fields and tab- or semicolon-separated files, as spreadsheets export them,
+    give the same frames as the plain comma-separated file."""
+    plain, variant = tmp_path / "plain.csv", tmp_path / "variant.csv"
+    plain.write_text(GOOD)
+    variant.write_text(SPREADSHEET_VARIANTS[case])
+    want, got = film.read_film(plain), film.read_film(variant)
+    for column in film.COLUMNS:
+        np.testing.assert_array_equal(getattr(got, column), getattr(want, column))
+
+
+def test_a_delimiter_other_than_the_headers_is_refused(tmp_path: Path) -> None:
+    """The header fixes the delimiter: a frame written with another one is a row with the
+    wrong number of fields, named by its line."""
+    path = tmp_path / "mixed.csv"
+    path.write_text("t\tx\ty\n0\t0.05\t0\n0.1,0.05,0.01\n")
+    with pytest.raises(film.FilmError, match=r"mixed.csv:3: 1 fields, but the header"):
+        film.read_film(path)
+
+
 # --------------------------------------------------------------------------- in the workflow
 def test_workflow_fits_the_synthetic_film_with_the_command(
     clean_build: Path,  # noqa: F811

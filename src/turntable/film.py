@@ -1,11 +1,13 @@
 """A filmed trajectory: the CSV file of tracked positions, and synthetic films.
 
 A film is the position (x, y) of the ball's centre in the lab (non-rotating) frame at the
-times t of the frames, in metres and seconds.  The file is text, comma-separated, UTF-8:
+times t of the frames, in metres and seconds.  The file is UTF-8 text with delimited
+fields, as spreadsheets and tracking programs write it:
 
 - lines whose first non-blank character is ``#`` are comments, blank lines are skipped;
 - the first other line is the header; it names at least the columns ``t``, ``x`` and
-  ``y`` (in any order; other columns are ignored);
+  ``y`` (in any order; other columns are ignored); its delimiter is the file's: a comma,
+  or else a tab, or else a semicolon (`DELIMITERS`); a field may be quoted (``"t"``);
 - every further line is one frame, with as many fields as the header; t, x and y are
   finite numbers and t increases strictly from frame to frame;
 - a comment line containing the word ``SYNTHETIC`` (upper case) marks the film as
@@ -20,6 +22,7 @@ parameters.
 
 from __future__ import annotations
 
+import csv
 import math
 import os
 import re
@@ -35,6 +38,9 @@ from turntable import _validate
 
 #: The columns a film must have: time (s) and the centre's position (m).
 COLUMNS = ("t", "x", "y")
+#: Field delimiters, in the order the header is searched for them: the first one the
+#: header line holds is the file's.
+DELIMITERS = (",", "\t", ";")
 #: Word of a comment line that marks a film as simulated (`synthetic_header` writes it).
 SYNTHETIC_MARK = "SYNTHETIC"
 _MARK = re.compile(rf"\b{SYNTHETIC_MARK}\b")
@@ -268,7 +274,8 @@ def read_film(
     ------
     FilmError
         For a file that cannot be read or is not UTF-8 text, a header without one of the
-        columns t, x, y (or with one of them twice), a row with another number of fields
+        columns t, x, y (or with one of them twice; quotes around a name are not part of
+        it), a row with another number of fields
         than the header, a value that is not a finite number, a time that does not
         increase, a value outside ``bounds``, or fewer than ``min_rows`` frames.  The
         message starts with ``<file>:<line>:`` and names the column and its field number
@@ -280,6 +287,7 @@ def read_film(
     except OSError as exc:
         raise FilmError(f"{name}: cannot read the file: {exc.strerror or exc}") from None
     header: dict[str, int] | None = None
+    delimiter = ","
     n_fields = 0
     header_line = 0
     columns: dict[str, list[float]] = {c: [] for c in COLUMNS}
@@ -298,7 +306,9 @@ def read_film(
             continue
         if not text.strip():
             continue
-        fields = [f.strip() for f in text.split(",")]
+        if header is None:
+            delimiter = next((d for d in DELIMITERS if d in text), ",")
+        fields = [f.strip() for f in next(csv.reader([text], delimiter=delimiter))]
         if header is None:
             header, header_line, n_fields = {}, number, len(fields)
             for i, field in enumerate(fields, start=1):

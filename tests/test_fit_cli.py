@@ -366,6 +366,81 @@ def test_a_delimiter_other_than_the_headers_is_refused(tmp_path: Path) -> None:
         film.read_film(path)
 
 
+def _readme_example() -> tuple[list[str], str]:
+    """The command and the JSON excerpt of the README's worked example ("Fitting your own
+    film")."""
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    section = readme.split("## Fitting your own film", 1)[1].split("\n## ", 1)[0]
+    (command,) = [
+        line for line in section.splitlines() if line.startswith(".venv/bin/turntable fit ")
+    ]
+    excerpt = section.split("```json", 1)[1].split("```", 1)[0]
+    return command.split()[2:], excerpt
+
+
+def test_the_readme_example_is_what_the_command_prints(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """The README's worked example, run on the synthetic film that the configuration in the
+    repository makes (as rule synthetic_film writes it): every number of its JSON excerpt
+    is the command's, to the digits shown, and so are the model selected and the flags."""
+    import re
+
+    import yaml
+
+    config = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())
+    args, excerpt = _readme_example()
+    name = Path(args[0]).stem
+    (spec,) = [f for f in config["synthetic_film"]["films"] if f["name"] == name]
+    rig = film.rig_from_config(config["film"])
+    data = film.simulate_film(
+        spec["model"], spec["coefficient"], rig.state0, rig.setup, rig.camera, spec["seed"]
+    )
+    path = tmp_path / f"{name}.csv"
+    film.write_film(path, data, ["SYNTHETIC DATA"])
+    args[0] = str(path)
+    if "--plot" in args:
+        args[args.index("--plot") + 1] = str(tmp_path / "fit.png")
+    proc = run_here(capsys, *args)
+    assert proc.returncode == 0, proc.stderr
+    out = json.loads(proc.stdout)
+    assert (tmp_path / "fit.png").exists() == ("--plot" in args)
+    # the selection, the flags and the warnings as shown
+    assert f'"selected": "{out["selected"]}"' in excerpt
+    for key in ("decisive", "residuals_white", "synthetic"):
+        shown = re.findall(rf'"{key}": (true|false)', excerpt)
+        assert shown, key
+    assert f'"decisive": {str(out["selection"]["decisive"]).lower()}' in excerpt
+    assert f'"synthetic": {str(out["data"]["synthetic"]).lower()}' in excerpt
+    assert ('"warnings": []' in excerpt) == (out["warnings"] == [])
+    # every number shown, in the entry it is shown in, to its digits
+    entries = {"selection": out["selection"], "data": out["data"], "consistency": None}
+    entries |= {m: out[m] for m in fit.MODELS}
+    entries["consistency"] = out["consistency"]
+    checked = 0
+    for block in re.split(r"\n \"", excerpt):
+        entry_name = block.split('"', 1)[0]
+        entry = entries.get(entry_name)
+        if entry is None:
+            continue
+        # one level of nesting (the Akaike weights), by the inner keys
+        entry = entry | {k: v for d in entry.values() if isinstance(d, dict) for k, v in d.items()}
+        for key, text in re.findall(r'"(\w+)": (-?\d[\d.e+-]*)', block):
+            value = entry[key]
+            digits = len(text.split("e")[0].split(".")[1]) if "." in text else 0
+            tolerance = (
+                0.5 * 10.0 ** (-digits) * (10.0 ** int(text.split("e")[1]) if "e" in text else 1)
+            )
+            assert abs(value - float(text)) <= tolerance * (1 + 1e-9), (
+                entry_name,
+                key,
+                value,
+                text,
+            )
+            checked += 1
+    assert checked >= 12, checked
+
+
 # --------------------------------------------------------------------------- in the workflow
 def test_workflow_fits_the_synthetic_film_with_the_command(
     clean_build: Path,  # noqa: F811

@@ -366,6 +366,57 @@ def test_a_delimiter_other_than_the_headers_is_refused(tmp_path: Path) -> None:
         film.read_film(path)
 
 
+def _still_film(tmp_path: Path, x: float, y: float, fps: float = 60.0) -> Path:
+    """A noiseless film of a ball that stays at (x, y) m for 5 s at ``fps`` frames/s."""
+    path = tmp_path / "still.csv"
+    rows = "".join(f"{i / fps!r},{x!r},{y!r}\n" for i in range(round(5 * fps)))
+    path.write_text("t,x,y\n" + rows)
+    return path
+
+
+@pytest.mark.parametrize("fps", [50.0, 60.0])
+def test_a_noiseless_film_of_a_ball_at_rest(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], fps: float
+) -> None:
+    """A ball at rest 5 cm from the axis, without noise, is an equilibrium of the slipping
+    model for every mu0 (2.3): the command gives no confident value of mu0 (no one-sided
+    limit drawn from rounding errors), and the exact fit's residuals are not taken for a
+    misfit. Two frame rates, which end the search at a bound and inside the range."""
+    path = _still_film(tmp_path, 0.05, 0.0, fps)
+    proc = run_here(capsys, str(path), "--radius", "0.005", "--rpm", "33.3")
+    lines = _warnings(proc)
+    out = json.loads(proc.stdout)
+    entry = out["slipping"]
+    # never a confident value: either the search ended at a bound, with the whole range as
+    # its limit, or inside it, with no finite standard error or one flagged as meaningless
+    if entry["mu0"] is None:
+        assert entry["mu0_upper_limit"] == pytest.approx(fit.BOUNDS["slipping"][1])
+        assert any("slipping: mu0" in line and "anywhere" in line for line in lines), lines
+    elif entry["mu0_stderr"] is None:
+        assert any("slipping: the film does not constrain mu0" in line for line in lines)
+    else:
+        assert entry["mu0_relative_stderr"] > fit.LINEAR_RELATIVE_ERROR
+        assert any("slipping: the relative standard error of mu0" in line for line in lines)
+    assert out["slipping"]["residuals_white"] is True
+    assert not any("neither model fits" in line for line in lines), lines
+
+
+def test_no_selection_between_two_exact_fits(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A ball at rest on the axis is an equilibrium of both models: both fit the noiseless
+    film to rounding, and AICc, which compares logarithms of residual sums, is not asked to
+    weigh rounding errors: no model is selected, and the reason says why."""
+    path = _still_film(tmp_path, 0.02, -0.01)
+    proc = run_here(
+        capsys, str(path), "--radius", "0.005", "--rpm", "33.3", "--axis", "0.02", "-0.01"
+    )
+    _warnings(proc)
+    out = json.loads(proc.stdout)
+    assert out["selected"] is None
+    assert "reproduce the positions to rounding" in out["selection"]["reason"]
+
+
 def _readme_example() -> tuple[list[str], str]:
     """The command and the JSON excerpt of the README's worked example ("Fitting your own
     film")."""

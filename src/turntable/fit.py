@@ -113,6 +113,10 @@ MIN_DOF = 20
 #: Residuals count as not white when their lag-1 autocorrelation exceeds this many times
 #: its spread 1 / sqrt(pairs) for white noise (false alarm about 3e-5 for white noise).
 WHITENESS_Z = 4.0
+#: A fit whose rms residual is at most this fraction of the largest distance of the tracked
+#: centre from the axis reproduces the positions to rounding: the film carries no noise by
+#: which to weigh the fits (a noiseless film, or a ball at rest tracked to whole pixels).
+EXACT_FIT = 1e-9
 #: Relative standard error (of ln c) above which a fit is not locally linear: its standard
 #: error and interval are then only indicative (Fig. 8: fits reach the Cramer-Rao bound
 #: below about this, and beyond a few times it their intervals miss the truth in up to half
@@ -496,6 +500,10 @@ class ModelFit(NamedTuple):
         Angular rate of the growing mode (beta, or Im lambda_g) in units of Omega: the ball
         turns about its spiral centre orbital_rate Omega T / (2 pi) times in a film of
         length T.
+    exact : bool
+        Whether the fit reproduces the positions to rounding (`EXACT_FIT`): then there is no
+        noise, the residuals count as white, and AICc cannot weigh it against another
+        exact fit.
     """
 
     model: str
@@ -523,6 +531,7 @@ class ModelFit(NamedTuple):
     autocorrelation: float = math.nan
     autocorrelation_sd: float = math.nan
     orbital_rate: float = math.nan
+    exact: bool = False
 
     @property
     def ci95(self) -> tuple[float, float]:
@@ -538,8 +547,9 @@ class ModelFit(NamedTuple):
 
     @property
     def white(self) -> bool:
-        """Whether the residuals pass as white noise: |autocorrelation| < `WHITENESS_Z` sd."""
-        return not abs(self.whiteness_z) > WHITENESS_Z
+        """Whether the residuals pass as white noise: |autocorrelation| < `WHITENESS_Z` sd
+        (or the fit is exact to rounding, and there is no noise to test)."""
+        return self.exact or not abs(self.whiteness_z) > WHITENESS_Z
 
 
 def _dimensionless(film: Film, setup: Setup) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
@@ -629,6 +639,8 @@ class _Fitter:
         self.lay, self.tau, self.k, self.scale = lay, tau, setup.k, setup.radius
         self.data = xy.ravel()
         self.n_obs = 2 * tau.size
+        #: RSS (m^2) of a fit that reproduces the positions to rounding (`EXACT_FIT`)
+        self.rss_floor = self.n_obs * (EXACT_FIT * self.scale * float(np.max(np.abs(xy)))) ** 2
         self.lo, self.hi = (math.log(b) for b in BOUNDS[lay.model])
         self.s_max = math.log(OMEGA_FACTOR)
 
@@ -721,13 +733,15 @@ def _limit(fitter: _Fitter, theta: NDArray[np.float64], rss: float, bound: str) 
 
     The profile RSS_p(c) (every other parameter refitted) is followed from the bound
     inwards, half a decade at a time, until RSS_p - RSS_min exceeds z_0.95^2 s^2 with
-    s^2 = RSS_min / (N - p); the crossing is then found by Brent's method in ln c.  The
-    result is a lower limit at the upper bound and an upper limit at the lower one; the
-    other end of `BOUNDS` if the film does not constrain the coefficient at all.
+    s^2 = RSS_min / (N - p), or the RSS of a fit exact to rounding if that is larger (a
+    noiseless film, where differences of rounding errors are no evidence); the crossing is
+    then found by Brent's method in ln c.  The result is a lower limit at the upper bound
+    and an upper limit at the lower one; the other end of `BOUNDS` if the film does not
+    constrain the coefficient at all.
     """
     lay = fitter.lay
     sigma2 = rss / max(fitter.n_obs - lay.size, 1)
-    target = Z95_ONE_SIDED**2 * sigma2
+    target = max(Z95_ONE_SIDED**2 * sigma2, fitter.rss_floor)
     start = fitter.hi if bound == "upper" else fitter.lo
     end = fitter.lo if bound == "upper" else fitter.hi
     step = math.copysign(0.5 * math.log(10.0), end - start)
@@ -868,6 +882,7 @@ def fit_model(
         autocorrelation=rho,
         autocorrelation_sd=rho_sd,
         orbital_rate=rate,
+        exact=rss <= fitter.rss_floor,
     )
 
 
@@ -957,6 +972,13 @@ def fit_film(
     if not finite:
         bad = [m for m, a in aiccs.items() if not math.isfinite(a)]
         reason = f"no model selected: the fit of {' and '.join(bad)} gave no finite AICc"
+        return FilmFit(fits, None, math.nan, weights, False, reason)
+    if all(f.exact for f in fits.values()):
+        reason = (
+            "no model selected: both models reproduce the positions to rounding (rms "
+            + " and ".join(f"{f.rms_residual:.2g} m" for f in fits.values())
+            + "); the film carries no noise by which to weigh them"
+        )
         return FilmFit(fits, None, math.nan, weights, False, reason)
     best = min(aiccs, key=aiccs.__getitem__)
     other = next(m for m in fits if m != best)
@@ -1193,7 +1215,12 @@ def problems(
     shown = checked_selection(result, check)
     for model in [shown.selected] if shown.selected and shown.decisive else list(result.fits):
         f = result.fits[model]
-        if f.bound is None and f.log_stderr > LINEAR_RELATIVE_ERROR:
+        if f.bound is None and not math.isfinite(f.log_stderr):
+            out.append(
+                f"{model}: the film does not constrain {COEFFICIENT[model]} (its standard error "
+                "is not finite): the value reported is no measurement"
+            )
+        elif f.bound is None and f.log_stderr > LINEAR_RELATIVE_ERROR:
             out.append(
                 f"{model}: the relative standard error of {COEFFICIENT[model]} is "
                 f"{f.log_stderr:.2g}, above {LINEAR_RELATIVE_ERROR:g}, where the fit is no "

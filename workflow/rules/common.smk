@@ -80,7 +80,8 @@ FIGURE_EXTRAS = {}
 
 def _git_state():
     """(commit, dirty) of the checkout, by turntable.provenance.git_state, loaded from its
-    file alone: importing the package would import numpy and scipy in every Snakemake run."""
+    file alone: importing the package would import numpy and scipy in every Snakemake run.
+    """
     from importlib.util import module_from_spec, spec_from_file_location
 
     spec = spec_from_file_location("_provenance", ROOT / "src/turntable/provenance.py")

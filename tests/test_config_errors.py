@@ -615,21 +615,84 @@ def test_every_key_has_type_bounds_description_and_a_valid_default(at: tuple[str
     assert "default" in prop
 
 
+def reference_differences(path: Path, shown: str = "config/config.yaml") -> str | None:
+    """Why the configuration file at ``path`` is not the schema's defaults, or None.
+
+    The project's configuration file holds its reference values, which are the `default:`
+    of each key of the schema: one value per key, however the two are read. The message
+    names each key that differs (file and line, both values) and the two ways forward.
+    """
+    config = yaml.safe_load(path.read_text())
+    lines = config_checks.Sources([path]).lines[0]
+    differ = []
+    for section in dict.fromkeys([*SCHEMA["properties"], *config]):
+        props = config_checks.key_schema((section,)).get("properties", {})
+        if section not in config or section not in SCHEMA["properties"]:
+            where = "the schema" if section not in config else shown
+            differ.append(f"  section {section} is only in {where}")
+            continue
+        for key in dict.fromkeys([*props, *config[section]]):
+            if key not in config[section] and section == "claims":
+                continue  # a key of the claims checks left out takes the schema's default
+            value = config[section].get(key, "(missing)")
+            default = props.get(key, {}).get("default", "(no such key)")
+            if json.dumps(value) != json.dumps(default):  # type included: 400 is not 400.0
+                line = lines.get((section, key), lines.get((section,), 0))
+                differ.append(
+                    f"  {shown}:{line}: {section}.{key} = {json.dumps(value)}; "
+                    f"the schema's default: {json.dumps(default)}"
+                )
+    if not differ:
+        return None
+    return "\n".join(
+        [
+            f"{shown} holds the project's reference values, which are the `default:` of each "
+            "key in workflow/schemas/config.schema.yaml; these differ:",
+            *differ,
+            "Either",
+            f"  - build with values of your own: restore {shown} (git checkout {shown}), put "
+            "the keys you change in a file of your own with the same layout, and run "
+            "`make CONFIGFILE=my.yaml` (its values go over those of config/config.yaml); or",
+            "  - change the project's reference values: write each value above as the "
+            "`default:` of its key in workflow/schemas/config.schema.yaml too.",
+        ]
+    )
+
+
 def test_the_configuration_file_holds_the_defaults_of_the_schema() -> None:
     """config/config.yaml and the schema's `default:` entries give the same values (type
-    included), so that the two cannot drift apart."""
-    config = yaml.safe_load(CONFIG_TEXT)
-    assert list(config) == list(SCHEMA["properties"])
-    for section, values in config.items():
-        for key, value in values.items():
-            default = config_checks.key_schema((section, key)).get("default")
-            assert json.dumps(value) == json.dumps(default), (section, key, value, default)
-    # keys left out (the claims checks) take the schema's default, the one place they live
-    for key in config_checks.key_schema(("claims",))["properties"]:
-        assert (
-            key not in config["claims"]
-            or config["claims"][key] == (config_checks.key_schema(("claims", key))["default"])
-        )
+    included), so that the two cannot drift apart; keys of the claims checks left out take
+    the schema's default, the one place they live."""
+    problem = reference_differences(ROOT / "config" / "config.yaml")
+    if problem:
+        pytest.fail(problem, pytrace=False)
+
+
+def test_a_reference_value_changed_in_one_place_is_told_with_the_ways_forward(
+    tmp_path: Path,
+) -> None:
+    """The README's example of a change (the last mu0 of Fig. 4) made in config/config.yaml
+    alone: the message names the key, its line and both values, and says what to do."""
+    path = tmp_path / "config.yaml"
+    old = "  mu0: [0.02, 0.0793, 0.3, 1.0, 10.0]\n"
+    path.write_text(replaced(old, old.replace("10.0]", "5.0]")))
+    problem = reference_differences(path)
+    assert problem is not None
+    line = line_of(CONFIG_TEXT, old.rstrip())
+    assert (
+        f"config/config.yaml:{line}: fig4_trajectories.mu0 = [0.02, 0.0793, 0.3, 1.0, 5.0]; "
+        "the schema's default: [0.02, 0.0793, 0.3, 1.0, 10.0]"
+    ) in problem
+    assert len([x for x in problem.splitlines() if "fig4_trajectories" in x]) == 1
+    assert "make CONFIGFILE=my.yaml" in problem
+    assert "git checkout config/config.yaml" in problem
+    assert "`default:` of its key in workflow/schemas/config.schema.yaml" in problem
+    # a count written as a float differs too, and a missing key is named
+    text = replaced("  n_points: 400\n\nfig3", "  n_points: 400.0\n\nfig3")
+    path.write_text(replaced("  n_error: 13\n", "", text))
+    problem = reference_differences(path)
+    assert "fig2_spectrum.n_points = 400.0; the schema's default: 400" in problem
+    assert 'fig6_limit.n_error = "(missing)"' in problem
 
 
 def _keys(at: tuple[str | int, ...]) -> list[tuple[str | int, ...]]:

@@ -282,3 +282,17 @@ def test_every_job_lists_exactly_the_code_its_script_imports(clean_build: Path) 
         f.startswith("src/") for f in imported_code(clean_build, "scripts/fig1_schematic.py")
     )
     assert "scripts/_style/animation.py" in imported_code(clean_build, "scripts/animation.py")
+
+
+def test_values_of_ones_own_over_the_configuration_rerun_the_jobs_that_read_them(
+    copy: Path,
+) -> None:
+    """The README's example: the last mu0 of Fig. 4 changed in a file of one's own, passed
+    with --configfile (`make CONFIGFILE=my.yaml`), config/config.yaml left as it is: the
+    jobs that read it are planned, as after an edit of config/config.yaml."""
+    config = yaml.safe_load((copy / "config" / "config.yaml").read_text())
+    mu0 = config["fig4_trajectories"]["mu0"]
+    (copy / "my.yaml").write_text(yaml.safe_dump({"fig4_trajectories": {"mu0": [*mu0[:-1], 5.0]}}))
+    proc = in_project(copy, "--dry-run", "--configfile", "my.yaml", cores=1)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    assert set(job_counts(proc.stdout)) == {"fig4_trajectories"} | DOWNSTREAM_OF_FIGURES

@@ -873,3 +873,22 @@ def test_a_missing_or_broken_configfile_is_told_by_the_check_make_runs_first(
     for line in runs:
         check = line.index("config_checks.py my.yaml &&")
         assert check < line.index("snakemake --configfile my.yaml"), line
+
+
+def test_the_readme_tells_why_make_configfile_is_the_supported_route(tmp_path: Path) -> None:
+    """Snakemake reads a --configfile before the workflow: run directly on a missing file it
+    still ends in a traceback, which the README gives as the reason to pass a file of one's
+    own with `make CONFIGFILE=` (when a Snakemake update tells it in a line, the README's
+    reason is to be revised)."""
+    readme = (ROOT / "README.md").read_text()
+    assert "**`make CONFIGFILE=my.yaml` is the supported way to pass a file of your own**" in readme
+    assert "`snakemake --configfile my.yaml` run directly answers a missing file with a" in readme
+    proc = subprocess.run(
+        [pipeline.SNAKEMAKE, "--dry-run", "--configfile", str(tmp_path / "missing.yaml")],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert proc.returncode != 0
+    assert "Traceback" in proc.stdout + proc.stderr

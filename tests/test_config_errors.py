@@ -481,14 +481,77 @@ def test_each_time_span_is_checked_against_its_own_mu0_with_max_time() -> None:
     state, k = pipeline.base_config()["fig4_trajectories"]["state"], 0.4
     limit = {m: float(turntable.max_time(m, k, state)) for m in (0.3, 1.0)}
     assert limit[0.3] < limit[1.0]
-    # the second span ends after the first mu0's limit: accepted, since it pairs with 1.0
+    # the second span ends after the first mu0's limit: representable, since it pairs with
+    # 1.0 (a figure could not show it: test_a_drawn_span_resolves_its_turns_and_growth)
     ok = _fig4([[0.0, 0.999 * limit[0.3]], [0.0, 0.999 * limit[1.0]]], [0.3, 1.0])
-    assert config_checks.problems(ok) == []
+    assert config_checks.solution_time_problems(ok) == []
     bad = _fig4([[0.0, 1.001 * limit[0.3]], [0.0, 20.0]], [0.3, 1.0])
     (problem,) = config_checks.problems(bad)
     assert problem.at == ("fig4_trajectories", "t_span", 0)
     assert f"after t = {limit[0.3]:.6g}" in problem.text
     assert "mu0 = 0.3," in problem.text
+
+
+def _drawn(section: str, **values: Any) -> list[str]:
+    """The texts of the problems of the project's configuration with ``values`` in
+    ``section`` (only the checks of drawn spans find any)."""
+    config = yaml.safe_load(CONFIG_TEXT)
+    config[section].update(values)
+    found = config_checks.problems(config)
+    assert found == config_checks.drawing_problems(config)
+    return [problem.text for problem in found]
+
+
+def test_a_drawn_span_resolves_its_turns_and_growth() -> None:
+    """A span that is representable but that no figure can show is refused: too few points
+    per turn of the spiral (beta of turntable.spectrum), or too much growth (alpha1 t_end).
+    Fig. 4's last span [0, 1.0e+5] for mu0 = 10 passed the bounds and drew 2000 points over
+    4500 turns with axes at 1e101."""
+    spans = [[0.0, 45.0], [0.0, 35.0], [0.0, 45.0], [0.0, 70.0], [0.0, 1.0e5]]
+    fig4 = _drawn("fig4_trajectories", t_span=spans)
+    beta = float(turntable.spectrum(10.0, 0.4).beta)
+    turns = beta * 1.0e5 / (2 * np.pi)
+    assert len(fig4) == 2
+    assert fig4[0].startswith(
+        "fig4_trajectories.t_span[4] = [0, 100000], drawn at fig4_trajectories.n_points = 2000 "
+        f"points, holds {turns:.4g} turns of the slipping ball (mu0 = 10): 0.44 points per turn;"
+        f" expected at least {config_checks.MIN_POINTS_PER_TURN} per turn"
+    )
+    assert fig4[1].startswith(
+        "fig4_trajectories.t_span[4] = [0, 100000]: by t = 100000, the slipping ball "
+        "(mu0 = 10) has grown by e^(alpha1 t) = 10^101"
+    )
+    alpha1 = float(turntable.spectrum(10.0, 0.4).alpha1)
+    assert fig4[1].endswith(f"t_end <= {np.log(config_checks.MAX_GROWTH) / alpha1:.4g}")
+    # Fig. 3: too few points alone (one span for both mu0, the faster one named), then growth
+    (fig3,) = _drawn("fig3_modal_terms", n_points=10)
+    assert "holds 0.3591 turns of the slipping ball (mu0 = 1): 25 points per turn" in fig3
+    assert "n_points >= 12," in fig3
+    assert _drawn("fig3_modal_terms", n_points=12) == []
+    (fig3,) = _drawn("fig3_modal_terms", t_span=[0.0, 200.0], n_points=5000)
+    assert "by t = 200, the slipping ball (mu0 = 0.1) has grown" in fig3
+    # Fig. 6: its layer is drawn on a log time axis: the growth alone
+    (fig6,) = _drawn("fig6_limit", layer_t_span=[1.0e-4, 8000.0], n_points=2)
+    assert fig6.startswith("fig6_limit.layer_t_span = [0.0001, 8000]: by t = 8000")
+    # Fig. 7: the rolling ball turns faster than the slipping one, and is named
+    (fig7,) = _drawn("fig7_rolling_resistance", t_span=[0.0, 500.0], n_points=300)
+    assert "turns of the rolling ball (delta = " in fig7
+    assert "n_points >= " in fig7
+
+
+def test_the_project_spans_are_drawn_readably() -> None:
+    """The default configuration passes with room: every drawn span at least twice the
+    fewest points per turn, and a growth far below the bound."""
+    config = yaml.safe_load(CONFIG_TEXT)
+    strict = {"MIN_POINTS_PER_TURN": 2 * config_checks.MIN_POINTS_PER_TURN, "MAX_GROWTH": 1.0e3}
+    saved = {name: getattr(config_checks, name) for name in strict}
+    try:
+        for name, value in strict.items():
+            setattr(config_checks, name, value)
+        assert config_checks.drawing_problems(config) == []
+    finally:
+        for name, value in saved.items():
+            setattr(config_checks, name, value)
 
 
 def test_a_range_of_mu0_is_checked_at_the_peak_of_alpha1() -> None:
@@ -535,7 +598,7 @@ def test_the_rolling_ball_of_fig7_is_checked_with_its_own_growth() -> None:
     (problem,) = config_checks.problems(config)
     assert "rolling ball" in problem.text
     fig7["t_span"] = [0.0, 0.99 * limit]
-    assert config_checks.problems(config) == []
+    assert config_checks.solution_time_problems(config) == []
 
 
 def _bounds(prop: dict[str, Any]) -> tuple[float, float]:
@@ -784,6 +847,20 @@ END_TO_END = {
     "t_span to 1e5": (
         lambda t: t.replace("  - - 0.0\n    - 20.0\n", "  - - 0.0\n    - 1.0e+5\n", 1),
         ["fig4_trajectories.t_span[0] ends at t = 100000", "turntable.max_time"],
+    ),
+    # representable, but 2000 points over 4500 turns and axes at 1e101 went into the article
+    "fig4's last span to 1e5 for mu0 = 10": (
+        lambda t: replaced(
+            "  - 1.0\n  t_span:\n  - - 0.0\n    - 20.0\n  - - 0.0\n    - 30.0\n",
+            "  - 10.0\n  t_span:\n  - - 0.0\n    - 20.0\n  - - 0.0\n    - 1.0e+5\n",
+            t,
+        ),
+        [
+            "config/config.yaml:",
+            "fig4_trajectories.t_span[1] = [0, 100000], drawn at fig4_trajectories.n_points",
+            "expected at least 30 per turn",
+            "has grown by e^(alpha1 t) = 10^101",
+        ],
     ),
     "misspelt section": (
         lambda t: replaced("fig2_spectrum:", "fig2_spectrm:", t),

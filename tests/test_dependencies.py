@@ -12,10 +12,12 @@ library's modulefinder (not by the workflow's own reading of the imports).
 
 from __future__ import annotations
 
+import json
 import os
 import re
 import shutil
 import subprocess
+import zlib
 from modulefinder import ModuleFinder
 from pathlib import Path
 
@@ -296,3 +298,63 @@ def test_values_of_ones_own_over_the_configuration_rerun_the_jobs_that_read_them
     proc = in_project(copy, "--dry-run", "--configfile", "my.yaml", cores=1)
     assert proc.returncode == 0, proc.stdout + proc.stderr
     assert set(job_counts(proc.stdout)) == {"fig4_trajectories"} | DOWNSTREAM_OF_FIGURES
+
+
+# --------------------------------------------------------------------------- the commit
+def git(tree: Path, *args: str) -> str:
+    return subprocess.run(
+        ["git", "-c", "user.name=t", "-c", "user.email=t@example.org", *args],
+        cwd=tree,
+        check=True,
+        capture_output=True,
+        text=True,
+    ).stdout.strip()
+
+
+def attached_build_record(pdf: Path) -> dict:
+    """The build record the article carries as an attachment (build.json), read from the
+    PDF's streams."""
+    data = pdf.read_bytes()
+    for start in re.finditer(rb"stream\r?\n", data):
+        chunk = data[start.end() : data.index(b"endstream", start.end())]
+        try:
+            text = zlib.decompress(chunk)
+        except zlib.error:
+            text = chunk
+        if text.lstrip().startswith(b"{") and b'"git_commit"' in text:
+            record = json.loads(text)
+            if set(record) == {"provenance", "repository"}:  # not claims.json, also attached
+                return record
+    raise AssertionError(f"{pdf} carries no build record")
+
+
+def test_the_article_names_the_commit_and_the_dirty_tree_that_built_it(copy: Path) -> None:
+    """The commit and the dirty state are params of rule paper: in a git checkout of a built
+    tree, a new commit that touches none of the article's inputs reruns the article alone,
+    which then carries that commit; a tree with uncommitted changes reruns it again, marked."""
+    (copy / ".gitignore").write_text(
+        "figures/\nresults/\nlogs/\n.snakemake/\npaper/paper.pdf\n__pycache__/\n"
+    )
+    git(copy, "init", "-q")
+    git(copy, "add", ".")
+    git(copy, "commit", "-q", "-m", "the sources")
+    pdf = copy / "paper" / "paper.pdf"
+    assert plan(copy) == {"paper": 1, "all": 1}  # built outside git: commit "unknown" before
+    for step in ["a commit", "another commit", "uncommitted changes"]:
+        (copy / "NOTES.md").write_text(f"{step}\n")
+        if step != "uncommitted changes":
+            git(copy, "add", "NOTES.md")
+            git(copy, "commit", "-q", "-m", step)
+            assert plan(copy) == {"paper": 1, "all": 1}, step
+        built = in_project(copy, cores=1)
+        assert built.returncode == 0, built.stdout + built.stderr
+        assert set(job_counts(built.stderr + built.stdout)) == {"paper", "all"}, step
+        record = attached_build_record(pdf)["provenance"]
+        head = git(copy, "rev-parse", "HEAD")
+        assert (record["git_commit"], record["git_dirty"]) == (
+            head,
+            step == "uncommitted changes",
+        )
+        # the caption links name the commit too
+        assert f"/blob/{head}/scripts/fig4_trajectories.py".encode() in pdf.read_bytes()
+        assert plan(copy) == {}, step

@@ -817,7 +817,9 @@ def test_turns_in_the_json() -> None:
     )
 
 
-@pytest.mark.parametrize("mu0", [1.0e-3, 0.3, 3.0, 1.0e4], ids=["delta at its bound", "far", "near", "close"])
+@pytest.mark.parametrize(
+    "mu0", [1.0e-3, 0.3, 3.0, 1.0e4], ids=["delta at its bound", "far", "near", "close"]
+)
 def test_distinguishability_is_the_rolling_fit_of_the_noiseless_film(mu0: float) -> None:
     """`distinguishability` fits without the standard errors and the limit at a bound that
     `fit_model` adds: its delta and rms distance are those of `fit_model`, bit for bit, and

@@ -9,7 +9,7 @@ is the Typst root; so the build does not depend on the working directory. System
 ignored and the creation date is fixed (config ``paper.timestamp``), so two builds give the
 same bytes. ``results/build.json`` in that tree is the provenance of this build
 (turntable.provenance: the commit that builds the PDF, a dirty tree, versions) and the
-repository address, read by paper/provenance.typ.
+repository address, read by paper/provenance.typ and attached to the PDF.
 """
 
 # %%

@@ -183,6 +183,20 @@ def test_bad_params_raise_naming_the_key(key: str, value: Any) -> None:
         claims.resolve_params({key: value})
 
 
+@pytest.mark.parametrize("state", [[0.0] * 6, [0, 0, 0, 0, 0, -0.0]])
+def test_an_all_zero_scaling_state_is_refused_by_the_schema_in_words(state: list) -> None:
+    """The schema's `not: {items: {const: 0}}` is the one check (no second one in code), and
+    its message says what is wrong and what is expected, not the schema's own text."""
+    with pytest.raises(ValueError, match="state_si") as info:
+        claims.resolve_params({"state_si": state})
+    message = str(info.value)
+    assert message.startswith(f"params['state_si']: {state!r} is not allowed (expected: ")
+    assert "not all zero" in message
+    assert "should not be valid" not in message
+    assert "const" not in message
+    assert len(message.splitlines()) == 1
+
+
 def test_the_schema_is_the_one_source_of_defaults_and_rules() -> None:
     """The package's schema gives every default; the workflow's schema refers to it."""
     schema = claims.params_schema()

@@ -481,14 +481,77 @@ def test_each_time_span_is_checked_against_its_own_mu0_with_max_time() -> None:
     state, k = pipeline.base_config()["fig4_trajectories"]["state"], 0.4
     limit = {m: float(turntable.max_time(m, k, state)) for m in (0.3, 1.0)}
     assert limit[0.3] < limit[1.0]
-    # the second span ends after the first mu0's limit: accepted, since it pairs with 1.0
+    # the second span ends after the first mu0's limit: representable, since it pairs with
+    # 1.0 (a figure could not show it: test_a_drawn_span_resolves_its_turns_and_growth)
     ok = _fig4([[0.0, 0.999 * limit[0.3]], [0.0, 0.999 * limit[1.0]]], [0.3, 1.0])
-    assert config_checks.problems(ok) == []
+    assert config_checks.solution_time_problems(ok) == []
     bad = _fig4([[0.0, 1.001 * limit[0.3]], [0.0, 20.0]], [0.3, 1.0])
     (problem,) = config_checks.problems(bad)
     assert problem.at == ("fig4_trajectories", "t_span", 0)
     assert f"after t = {limit[0.3]:.6g}" in problem.text
     assert "mu0 = 0.3," in problem.text
+
+
+def _drawn(section: str, **values: Any) -> list[str]:
+    """The texts of the problems of the project's configuration with ``values`` in
+    ``section`` (only the checks of drawn spans find any)."""
+    config = yaml.safe_load(CONFIG_TEXT)
+    config[section].update(values)
+    found = config_checks.problems(config)
+    assert found == config_checks.drawing_problems(config)
+    return [problem.text for problem in found]
+
+
+def test_a_drawn_span_resolves_its_turns_and_growth() -> None:
+    """A span that is representable but that no figure can show is refused: too few points
+    per turn of the spiral (beta of turntable.spectrum), or too much growth (alpha1 t_end).
+    Fig. 4's last span [0, 1.0e+5] for mu0 = 10 passed the bounds and drew 2000 points over
+    4500 turns with axes at 1e101."""
+    spans = [[0.0, 45.0], [0.0, 35.0], [0.0, 45.0], [0.0, 70.0], [0.0, 1.0e5]]
+    fig4 = _drawn("fig4_trajectories", t_span=spans)
+    beta = float(turntable.spectrum(10.0, 0.4).beta)
+    turns = beta * 1.0e5 / (2 * np.pi)
+    assert len(fig4) == 2
+    assert fig4[0].startswith(
+        "fig4_trajectories.t_span[4] = [0, 100000], drawn at fig4_trajectories.n_points = 2000 "
+        f"points, holds {turns:.4g} turns of the slipping ball (mu0 = 10): 0.44 points per turn;"
+        f" expected at least {config_checks.MIN_POINTS_PER_TURN} per turn"
+    )
+    assert fig4[1].startswith(
+        "fig4_trajectories.t_span[4] = [0, 100000]: by t = 100000, the slipping ball "
+        "(mu0 = 10) has grown by e^(alpha1 t) = 10^101"
+    )
+    alpha1 = float(turntable.spectrum(10.0, 0.4).alpha1)
+    assert fig4[1].endswith(f"t_end <= {np.log(config_checks.MAX_GROWTH) / alpha1:.4g}")
+    # Fig. 3: too few points alone (one span for both mu0, the faster one named), then growth
+    (fig3,) = _drawn("fig3_modal_terms", n_points=10)
+    assert "holds 0.3591 turns of the slipping ball (mu0 = 1): 25 points per turn" in fig3
+    assert "n_points >= 12," in fig3
+    assert _drawn("fig3_modal_terms", n_points=12) == []
+    (fig3,) = _drawn("fig3_modal_terms", t_span=[0.0, 200.0], n_points=5000)
+    assert "by t = 200, the slipping ball (mu0 = 0.1) has grown" in fig3
+    # Fig. 6: its layer is drawn on a log time axis: the growth alone
+    (fig6,) = _drawn("fig6_limit", layer_t_span=[1.0e-4, 8000.0], n_points=2)
+    assert fig6.startswith("fig6_limit.layer_t_span = [0.0001, 8000]: by t = 8000")
+    # Fig. 7: the rolling ball turns faster than the slipping one, and is named
+    (fig7,) = _drawn("fig7_rolling_resistance", t_span=[0.0, 500.0], n_points=300)
+    assert "turns of the rolling ball (delta = " in fig7
+    assert "n_points >= " in fig7
+
+
+def test_the_project_spans_are_drawn_readably() -> None:
+    """The default configuration passes with room: every drawn span at least twice the
+    fewest points per turn, and a growth far below the bound."""
+    config = yaml.safe_load(CONFIG_TEXT)
+    strict = {"MIN_POINTS_PER_TURN": 2 * config_checks.MIN_POINTS_PER_TURN, "MAX_GROWTH": 1.0e3}
+    saved = {name: getattr(config_checks, name) for name in strict}
+    try:
+        for name, value in strict.items():
+            setattr(config_checks, name, value)
+        assert config_checks.drawing_problems(config) == []
+    finally:
+        for name, value in saved.items():
+            setattr(config_checks, name, value)
 
 
 def test_a_range_of_mu0_is_checked_at_the_peak_of_alpha1() -> None:
@@ -535,7 +598,7 @@ def test_the_rolling_ball_of_fig7_is_checked_with_its_own_growth() -> None:
     (problem,) = config_checks.problems(config)
     assert "rolling ball" in problem.text
     fig7["t_span"] = [0.0, 0.99 * limit]
-    assert config_checks.problems(config) == []
+    assert config_checks.solution_time_problems(config) == []
 
 
 def _bounds(prop: dict[str, Any]) -> tuple[float, float]:
@@ -615,21 +678,84 @@ def test_every_key_has_type_bounds_description_and_a_valid_default(at: tuple[str
     assert "default" in prop
 
 
+def reference_differences(path: Path, shown: str = "config/config.yaml") -> str | None:
+    """Why the configuration file at ``path`` is not the schema's defaults, or None.
+
+    The project's configuration file holds its reference values, which are the `default:`
+    of each key of the schema: one value per key, however the two are read. The message
+    names each key that differs (file and line, both values) and the two ways forward.
+    """
+    config = yaml.safe_load(path.read_text())
+    lines = config_checks.Sources([path]).lines[0]
+    differ = []
+    for section in dict.fromkeys([*SCHEMA["properties"], *config]):
+        props = config_checks.key_schema((section,)).get("properties", {})
+        if section not in config or section not in SCHEMA["properties"]:
+            where = "the schema" if section not in config else shown
+            differ.append(f"  section {section} is only in {where}")
+            continue
+        for key in dict.fromkeys([*props, *config[section]]):
+            if key not in config[section] and section == "claims":
+                continue  # a key of the claims checks left out takes the schema's default
+            value = config[section].get(key, "(missing)")
+            default = props.get(key, {}).get("default", "(no such key)")
+            if json.dumps(value) != json.dumps(default):  # type included: 400 is not 400.0
+                line = lines.get((section, key), lines.get((section,), 0))
+                differ.append(
+                    f"  {shown}:{line}: {section}.{key} = {json.dumps(value)}; "
+                    f"the schema's default: {json.dumps(default)}"
+                )
+    if not differ:
+        return None
+    return "\n".join(
+        [
+            f"{shown} holds the project's reference values, which are the `default:` of each "
+            "key in workflow/schemas/config.schema.yaml; these differ:",
+            *differ,
+            "Either",
+            f"  - build with values of your own: restore {shown} (git checkout {shown}), put "
+            "the keys you change in a file of your own with the same layout, and run "
+            "`make CONFIGFILE=my.yaml` (its values go over those of config/config.yaml); or",
+            "  - change the project's reference values: write each value above as the "
+            "`default:` of its key in workflow/schemas/config.schema.yaml too.",
+        ]
+    )
+
+
 def test_the_configuration_file_holds_the_defaults_of_the_schema() -> None:
     """config/config.yaml and the schema's `default:` entries give the same values (type
-    included), so that the two cannot drift apart."""
-    config = yaml.safe_load(CONFIG_TEXT)
-    assert list(config) == list(SCHEMA["properties"])
-    for section, values in config.items():
-        for key, value in values.items():
-            default = config_checks.key_schema((section, key)).get("default")
-            assert json.dumps(value) == json.dumps(default), (section, key, value, default)
-    # keys left out (the claims checks) take the schema's default, the one place they live
-    for key in config_checks.key_schema(("claims",))["properties"]:
-        assert (
-            key not in config["claims"]
-            or config["claims"][key] == (config_checks.key_schema(("claims", key))["default"])
-        )
+    included), so that the two cannot drift apart; keys of the claims checks left out take
+    the schema's default, the one place they live."""
+    problem = reference_differences(ROOT / "config" / "config.yaml")
+    if problem:
+        pytest.fail(problem, pytrace=False)
+
+
+def test_a_reference_value_changed_in_one_place_is_told_with_the_ways_forward(
+    tmp_path: Path,
+) -> None:
+    """The README's example of a change (the last mu0 of Fig. 4) made in config/config.yaml
+    alone: the message names the key, its line and both values, and says what to do."""
+    path = tmp_path / "config.yaml"
+    old = "  mu0: [0.02, 0.0793, 0.3, 1.0, 10.0]\n"
+    path.write_text(replaced(old, old.replace("10.0]", "5.0]")))
+    problem = reference_differences(path)
+    assert problem is not None
+    line = line_of(CONFIG_TEXT, old.rstrip())
+    assert (
+        f"config/config.yaml:{line}: fig4_trajectories.mu0 = [0.02, 0.0793, 0.3, 1.0, 5.0]; "
+        "the schema's default: [0.02, 0.0793, 0.3, 1.0, 10.0]"
+    ) in problem
+    assert len([x for x in problem.splitlines() if "fig4_trajectories" in x]) == 1
+    assert "make CONFIGFILE=my.yaml" in problem
+    assert "git checkout config/config.yaml" in problem
+    assert "`default:` of its key in workflow/schemas/config.schema.yaml" in problem
+    # a count written as a float differs too, and a missing key is named
+    text = replaced("  n_points: 400\n\nfig3", "  n_points: 400.0\n\nfig3")
+    path.write_text(replaced("  n_error: 13\n", "", text))
+    problem = reference_differences(path)
+    assert "fig2_spectrum.n_points = 400.0; the schema's default: 400" in problem
+    assert 'fig6_limit.n_error = "(missing)"' in problem
 
 
 def _keys(at: tuple[str | int, ...]) -> list[tuple[str | int, ...]]:
@@ -722,6 +848,20 @@ END_TO_END = {
         lambda t: t.replace("  - - 0.0\n    - 20.0\n", "  - - 0.0\n    - 1.0e+5\n", 1),
         ["fig4_trajectories.t_span[0] ends at t = 100000", "turntable.max_time"],
     ),
+    # representable, but 2000 points over 4500 turns and axes at 1e101 went into the article
+    "fig4's last span to 1e5 for mu0 = 10": (
+        lambda t: replaced(
+            "  - 1.0\n  t_span:\n  - - 0.0\n    - 20.0\n  - - 0.0\n    - 30.0\n",
+            "  - 10.0\n  t_span:\n  - - 0.0\n    - 20.0\n  - - 0.0\n    - 1.0e+5\n",
+            t,
+        ),
+        [
+            "config/config.yaml:",
+            "fig4_trajectories.t_span[1] = [0, 100000], drawn at fig4_trajectories.n_points",
+            "expected at least 30 per turn",
+            "has grown by e^(alpha1 t) = 10^101",
+        ],
+    ),
     "misspelt section": (
         lambda t: replaced("fig2_spectrum:", "fig2_spectrm:", t),
         ["unknown section 'fig2_spectrm'; did you mean 'fig2_spectrum' (missing)?"],
@@ -810,3 +950,22 @@ def test_a_missing_or_broken_configfile_is_told_by_the_check_make_runs_first(
     for line in runs:
         check = line.index("config_checks.py my.yaml &&")
         assert check < line.index("snakemake --configfile my.yaml"), line
+
+
+def test_the_readme_tells_why_make_configfile_is_the_supported_route(tmp_path: Path) -> None:
+    """Snakemake reads a --configfile before the workflow: run directly on a missing file it
+    still ends in a traceback, which the README gives as the reason to pass a file of one's
+    own with `make CONFIGFILE=` (when a Snakemake update tells it in a line, the README's
+    reason is to be revised)."""
+    readme = (ROOT / "README.md").read_text()
+    assert "**`make CONFIGFILE=my.yaml` is the supported way to pass a file of your own**" in readme
+    assert "`snakemake --configfile my.yaml` run directly answers a missing file with a" in readme
+    proc = subprocess.run(
+        [pipeline.SNAKEMAKE, "--dry-run", "--configfile", str(tmp_path / "missing.yaml")],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert proc.returncode != 0
+    assert "Traceback" in proc.stdout + proc.stderr

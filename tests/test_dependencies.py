@@ -6,13 +6,19 @@ default target tells which jobs Snakemake would run: every job whose script impo
 package after an edit of the package, only the jobs of a script (and those that read its
 outputs) after an edit of that script, nothing after a copy of the whole tree. One test per
 row of the table in README.md, "Changing a parameter and rebuilding only what changed".
+The inputs of every job are checked against what its script imports, found by the standard
+library's modulefinder (not by the workflow's own reading of the imports).
 """
 
 from __future__ import annotations
 
+import json
 import os
+import re
 import shutil
 import subprocess
+import zlib
+from modulefinder import ModuleFinder
 from pathlib import Path
 
 import pytest
@@ -30,6 +36,8 @@ from ci_build import (
 from test_pipeline import clean_build, in_project, shared_tmp  # noqa: F401
 
 DRAWING = {*FIGURE_NAMES, "study", "animation"}  # the jobs that use scripts/_style
+# the one figure whose script does not import turntable
+NOT_IMPORTING_THE_PACKAGE = {"fig1_schematic"}
 DOWNSTREAM_OF_FIGURES = {"paper", "figure_gallery", "all"}
 # the page of the report that shows the film figures (Figs. 8 and 9) and the fits
 FILM_PAGE = {"film_page"}
@@ -100,8 +108,9 @@ def test_editing_the_package_reruns_every_job_that_imports_it(
             f.write("# an edit\n")
     else:
         (package / "new_module.py").write_text('"""A new module."""\n')
-    # every job: each imports turntable, or reads what such a job wrote
-    assert plan(copy) == everything
+    # every job but the schematic: each imports turntable, or reads what such a job wrote
+    expected = {rule: n for rule, n in everything.items() if rule not in NOT_IMPORTING_THE_PACKAGE}
+    assert plan(copy) == expected
 
 
 def test_files_an_editor_leaves_in_the_package_rerun_nothing(copy: Path) -> None:
@@ -124,6 +133,21 @@ def test_editing_the_notebook_driver_reruns_every_job_that_runs_a_script(
     assert plan(copy) == everything
 
 
+@pytest.mark.parametrize("how", ["touch", "rewrite unchanged"])
+def test_a_notebook_driver_of_the_same_content_reruns_nothing(copy: Path, how: str) -> None:
+    """The driver is an input, compared by content (the rule's `script:` is a stub that does
+    not change): touching it, or a git checkout or stash that writes the same bytes, reruns
+    nothing."""
+    driver = copy / "workflow" / "scripts" / "run_notebook.py"
+    if how == "touch":
+        driver.touch()
+    else:
+        text = driver.read_bytes()
+        driver.unlink()
+        driver.write_bytes(text)
+    assert plan(copy) == {}
+
+
 def test_editing_a_caption_reruns_only_the_figure_page(copy: Path) -> None:
     with open(copy / "workflow" / "report" / "fig2_spectrum.rst", "a") as f:
         f.write("\nAn edit.\n")
@@ -137,6 +161,10 @@ def test_editing_a_caption_reruns_only_the_figure_page(copy: Path) -> None:
         ("scripts/study_k.py", {"study_k", "study", "all"}),
         ("scripts/claims_report.py", {"claims", "claims_table", "paper", "all"}),
         ("scripts/_style/turntable.mplstyle", DRAWING | DOWNSTREAM_OF_FIGURES | FILM_PAGE),
+        ("scripts/_style/__init__.py", DRAWING | DOWNSTREAM_OF_FIGURES | FILM_PAGE),
+        # only the animation imports it; the figure page shows the animation
+        ("scripts/_style/animation.py", {"animation", "figure_gallery", "all"}),
+        ("workflow/scripts/report_figure.py", {"figure_gallery", "all"} | FILM_PAGE),
     ],
 )
 def test_editing_a_script_reruns_only_its_jobs(copy: Path, script: str, expected: set) -> None:
@@ -172,3 +200,165 @@ def test_editing_a_parameter_reruns_the_jobs_that_read_it(
     assert set(planned) == expected
     if "fit_film" in expected:  # one fit per film, each of whose data changed
         assert planned["fit_film"] == len(config["synthetic_film"]["films"])
+
+
+# --------------------------------------------------------------------------- exact inputs
+def jobs_of(plan_text: str) -> list[tuple[str, list[str]]]:
+    """(rule, inputs) of every job a dry run lists."""
+    jobs = []
+    for block in re.split(r"^(?:local)?rule ", plan_text, flags=re.MULTILINE)[1:]:
+        rule = block.split(":", 1)[0]
+        found = re.search(r"^    input: (.*)$", block, flags=re.MULTILINE)
+        jobs.append((rule, found.group(1).split(", ") if found else []))
+    return jobs
+
+
+def rule_scripts() -> dict[str, str]:
+    """The rules whose `script:` is a file named in the rules files (workflow/scripts/), by
+    rule: the path of the script relative to the repository."""
+    found = {}
+    for smk in (ROOT / "workflow" / "rules").glob("*.smk"):
+        pattern = r'^rule (\w+):\n(?:(?!rule ).*\n)*?    script:\n        "\.\./(.+)"$'
+        for rule, path in re.findall(pattern, smk.read_text(), flags=re.MULTILINE):
+            found[rule] = f"workflow/{path}"
+    return found
+
+
+def imported_code(tree: Path, script: str) -> set[str]:
+    """The files of `tree` that `script` imports, by modulefinder on the script's folder and
+    src/ alone (the installed packages are not searched): every file of the package when any
+    module of turntable is found, the file of any other module found (and for a package the
+    files of its folder that are not Python: the style sheet of scripts/_style)."""
+    path = tree / script
+    finder = ModuleFinder(path=[str(path.parent), str(tree / "src")])
+    finder.run_script(str(path))
+    files = set()
+    for name, module in finder.modules.items():
+        if name == "__main__" or not module.__file__:
+            continue
+        if name.split(".")[0] == "turntable":
+            package = tree / "src" / "turntable"
+            files |= {p for p in package.rglob("*") if p.is_file() and "__pycache__" not in p.parts}
+            continue
+        file = Path(module.__file__)
+        files.add(file)
+        if file.name == "__init__.py":
+            files |= {p for p in file.parent.iterdir() if p.is_file() and p.suffix != ".py"}
+    return {str(p.relative_to(tree)) for p in files}
+
+
+CODE_FOLDERS = ("src/turntable/", "scripts/_style/", "workflow/scripts/")
+NOTEBOOK_DRIVER = "workflow/scripts/run_notebook.py"
+
+
+def test_every_job_lists_exactly_the_code_its_script_imports(clean_build: Path) -> None:  # noqa: F811
+    """For every job of a forced dry run: the files of the project's code among its inputs are
+    exactly those its script imports (and the notebook driver for a script of scripts/), so
+    that no edit reruns a job that does not run the file, and every edit reruns those that do.
+    `turntable fit` (rule fit_film, a command) runs the package."""
+    proc = in_project(clean_build, "--dry-run", "--forceall", "--nolock", cores=1)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    scripts = rule_scripts()
+    assert set(scripts) == {"claims_table", "figure_gallery", "film_page"}
+    package = imported_code(clean_build, "workflow/scripts/claims_table.py")
+    checked = set()
+    for rule, inputs in jobs_of(proc.stdout):
+        code = {f for f in inputs if f.startswith(CODE_FOLDERS)}
+        own = [f for f in inputs if re.fullmatch(r"scripts/\w+\.py", f)]
+        if own:  # a script of scripts/, run as a notebook by the driver
+            (script,) = own
+            expected = imported_code(clean_build, script) | {NOTEBOOK_DRIVER}
+        elif rule in scripts:
+            expected = imported_code(clean_build, scripts[rule])
+        elif rule == "fit_film":
+            expected = package
+        else:  # rules that copy or gather files
+            assert rule in {"all"}, rule
+            expected = set()
+        assert code == expected, (rule, sorted(code ^ expected))
+        checked.add(rule)
+    assert {*FIGURE_NAMES, "animation", "study", "study_k", *scripts} <= checked
+    # what a wrong declaration would look like: the schematic does not import turntable, and
+    # only the animation imports scripts/_style/animation.py
+    assert not any(
+        f.startswith("src/") for f in imported_code(clean_build, "scripts/fig1_schematic.py")
+    )
+    assert "scripts/_style/animation.py" in imported_code(clean_build, "scripts/animation.py")
+
+
+def test_values_of_ones_own_over_the_configuration_rerun_the_jobs_that_read_them(
+    copy: Path,
+) -> None:
+    """The README's example: the last mu0 of Fig. 4 changed in a file of one's own, passed
+    with --configfile (`make CONFIGFILE=my.yaml`), config/config.yaml left as it is: the
+    jobs that read it are planned, as after an edit of config/config.yaml."""
+    config = yaml.safe_load((copy / "config" / "config.yaml").read_text())
+    mu0 = config["fig4_trajectories"]["mu0"]
+    (copy / "my.yaml").write_text(yaml.safe_dump({"fig4_trajectories": {"mu0": [*mu0[:-1], 5.0]}}))
+    proc = in_project(copy, "--dry-run", "--configfile", "my.yaml", cores=1)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    assert set(job_counts(proc.stdout)) == {"fig4_trajectories"} | DOWNSTREAM_OF_FIGURES
+
+
+# --------------------------------------------------------------------------- the commit
+def git(tree: Path, *args: str) -> str:
+    return subprocess.run(
+        ["git", "-c", "user.name=t", "-c", "user.email=t@example.org", *args],
+        cwd=tree,
+        check=True,
+        capture_output=True,
+        text=True,
+    ).stdout.strip()
+
+
+def attached_build_record(pdf: Path) -> dict:
+    """The build record the article carries as an attachment (build.json), read from the
+    PDF's streams."""
+    data = pdf.read_bytes()
+    for start in re.finditer(rb"stream\r?\n", data):
+        chunk = data[start.end() : data.index(b"endstream", start.end())]
+        try:
+            text = zlib.decompress(chunk)
+        except zlib.error:
+            text = chunk
+        if text.lstrip().startswith(b"{") and b'"git_commit"' in text:
+            record = json.loads(text)
+            if set(record) == {"provenance", "repository"}:  # not claims.json, also attached
+                return record
+    raise AssertionError(f"{pdf} carries no build record")
+
+
+def test_the_article_names_the_commit_and_the_dirty_tree_that_built_it(copy: Path) -> None:
+    """The commit and the dirty state are params of rule paper: in a git checkout of a built
+    tree, a new commit that touches none of the article's inputs reruns the article alone, as
+    do uncommitted changes, and the article built carries the commit and the dirty mark."""
+    (copy / ".gitignore").write_text(
+        "figures/\nresults/\nlogs/\n.snakemake/\npaper/paper.pdf\n__pycache__/\n"
+    )
+    git(copy, "init", "-q")
+    git(copy, "add", ".")
+    git(copy, "commit", "-q", "-m", "the sources")
+    pdf = copy / "paper" / "paper.pdf"
+    article_alone = {"paper": 1, "all": 1}
+
+    def build() -> dict:
+        proc = in_project(copy, cores=1)
+        assert proc.returncode == 0, proc.stdout + proc.stderr
+        assert job_counts(proc.stderr + proc.stdout) == article_alone
+        assert plan(copy) == {}
+        return attached_build_record(pdf)["provenance"]
+
+    assert plan(copy) == article_alone  # built outside git: the commit was "unknown"
+    record = build()
+    assert (record["git_commit"], record["git_dirty"]) == (git(copy, "rev-parse", "HEAD"), False)
+    (copy / "NOTES.md").write_text("a note\n")
+    git(copy, "add", "NOTES.md")
+    git(copy, "commit", "-q", "-m", "a note")
+    assert plan(copy) == article_alone  # a new commit
+    (copy / "NOTES.md").write_text("a note, changed\n")
+    assert plan(copy) == article_alone  # and a dirty tree
+    record = build()
+    head = git(copy, "rev-parse", "HEAD")
+    assert (record["git_commit"], record["git_dirty"]) == (head, True)
+    # the caption links name the commit too
+    assert f"/blob/{head}/scripts/fig4_trajectories.py".encode() in pdf.read_bytes()

@@ -815,3 +815,27 @@ def test_turns_in_the_json() -> None:
     assert out["rolling_resistance"]["orbital_turns"] == pytest.approx(
         nu * RIG.omega * 6.0 / (2 * math.pi)
     )
+
+
+@pytest.mark.parametrize(
+    "mu0", [1.0e-3, 0.3, 3.0, 1.0e4], ids=["delta at its bound", "far", "near", "close"]
+)
+def test_distinguishability_is_the_rolling_fit_of_the_noiseless_film(mu0: float) -> None:
+    """`distinguishability` fits without the standard errors and the limit at a bound that
+    `fit_model` adds: its delta and rms distance are those of `fit_model`, bit for bit, and
+    its selection probability is scipy.stats.ncf's survival function."""
+    from scipy.stats import ncf
+
+    camera = film.Camera(fps=30.0, noise=2e-4, duration=10.0)
+    d = fit.distinguishability(mu0, START, RIG, camera)
+    t = film.frame_times(camera)
+    xy = fit.positions("slipping", mu0, START, t, RIG)
+    full = fit.fit_model(film.Film(t, xy[:, 0], xy[:, 1]), RIG, "rolling_resistance")
+    assert (d.delta, d.rms_distance) == (full.coefficient, full.rms_residual)
+    assert d.noncentrality == full.rss / camera.noise**2
+    n, p_s, q = full.n_observations, fit.n_parameters("slipping"), 2
+    k_s, k_r = p_s + 1, p_s - 1
+    penalty = 2 * q + 2 * k_s * (k_s + 1) / (n - k_s - 1) - 2 * k_r * (k_r + 1) / (n - k_r - 1)
+    threshold = math.expm1(penalty / n) * (n - p_s) / q
+    expected = ncf.sf(threshold, q, n - p_s, d.noncentrality)
+    assert d.selection_probability == pytest.approx(expected, rel=1e-12, abs=1e-15)

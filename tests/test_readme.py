@@ -3,11 +3,13 @@
 from __future__ import annotations
 
 import re
+import shutil
 from pathlib import Path
 
 import pytest
 
 from ci_build import ROOT, shared_build
+from test_pipeline import clean_build, in_project, shared_tmp  # noqa: F401
 
 README = (ROOT / "README.md").read_text()
 DOC_FIGURE = ROOT / "docs" / "fig4_trajectories.png"
@@ -28,6 +30,23 @@ def test_readme_figure_is_the_pipeline_figure(build: Path) -> None:
     assert DOC_FIGURE.read_bytes() == built, "docs/ is stale: run `make readme-figure`"
 
 
+def test_the_copies_for_the_readme_are_never_empty(
+    clean_build: Path,  # noqa: F811
+    tmp_path: Path,
+) -> None:
+    """The rules that copy a figure and the animation into docs/ declare their outputs
+    non-empty (like every other output of the workflow): an empty source, copied, fails the
+    job and leaves no empty file under docs/ for the README."""
+    copy = Path(shutil.copytree(clean_build, tmp_path / "copy", symlinks=True))
+    targets = ["docs/fig4_trajectories.png", "docs/animation.gif"]
+    for name in ["fig4_trajectories.png", "animation.gif"]:
+        (copy / "figures" / name).write_bytes(b"")
+    proc = in_project(copy, *targets, "--keep-going", "--forcerun", *targets, cores=1)
+    assert proc.returncode != 0, proc.stdout + proc.stderr
+    assert proc.stderr.count("Detected unexpected empty output files") == 2, proc.stderr
+    assert not [t for t in targets if (copy / t).exists()]
+
+
 def test_readme_shows_the_figure() -> None:
     assert "](docs/fig4_trajectories.png)" in README
 
@@ -35,7 +54,8 @@ def test_readme_shows_the_figure() -> None:
 def test_make_targets_in_readme_exist() -> None:
     makefile = (ROOT / "Makefile").read_text()
     targets = set(re.findall(r"^([\w-]+):", makefile, flags=re.MULTILINE))
-    used = set(re.findall(r"^\s*make ([\w-]+)", README, flags=re.MULTILINE))
+    # (make VARIABLE=value sets a variable: not a target)
+    used = set(re.findall(r"^\s*make ([\w-]+)(?![\w=-])", README, flags=re.MULTILINE))
     used |= set(re.findall(r"`make ([\w-]+)`", README))
     assert used
     assert used <= targets, used - targets

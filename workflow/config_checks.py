@@ -18,6 +18,9 @@ workflow/schemas/config.schema.yaml and by naming conventions, not by a list of 
   time at which the solution is representable in doubles, as `turntable.max_time` tells
   (and `turntable.rolling.solve` for the rolling ball); a list of spans has one span per
   friction coefficient;
+- a span that a figure draws (schema annotation ``x-drawn``) keeps the motion readable: it
+  grows at most `MAX_GROWTH` over the span, and, sampled at ``n_points`` evenly spaced times,
+  has at least `MIN_POINTS_PER_TURN` points per turn of the spiral (`drawing_problems`);
 - the ``claims`` section is checked against the package's schema of the claims parameters
   (src/turntable/claims/params.schema.yaml, which `turntable.claims.resolve_params` uses
   too); importing `turntable.claims` itself would cost every Snakemake run 1.5 s;
@@ -95,6 +98,16 @@ MAX_FRAMES = 10**6
 #: Log-spaced values of mu0 per decade at which a [low, high] range of mu0 is checked
 #: against turntable.max_time, besides the peak of alpha1 when it lies inside the range.
 RANGE_SAMPLES_PER_DECADE = 32
+
+#: Fewest points per turn 2 pi/beta of the spiral at which a drawn path is a curve: chords
+#: of 12 degrees, within 0.6 % of the radius (1 - cos(pi/30)). Fig. 4's last span
+#: [0, 1.0e+5] (mu0 = 10, 4500 turns) at 2000 points gives 0.44 per turn.
+MIN_POINTS_PER_TURN = 30
+
+#: Most a drawn motion may grow over its span, e^(alpha1 t_end): beyond, its first turns are
+#: far below a pixel of the panel and its axes run to powers of ten no reader can place
+#: (Fig. 4's span [0, 1.0e+5] for mu0 = 10: 10^101, still representable in doubles).
+MAX_GROWTH = 1.0e6
 
 HEADER = "Invalid configuration; nothing was run and no output was changed:"
 
@@ -710,6 +723,89 @@ def _first_unrepresentable(
     return None
 
 
+def drawing_problems(
+    config: Mapping[str, Any], schema_path: str | os.PathLike[str] = SCHEMA
+) -> list[Problem]:
+    """Spans annotated ``x-drawn`` (with their ``x-solution-times``) keep the motion readable:
+    at most one problem per span and kind (too few points per turn, too much growth)."""
+    problems = []
+    for section, values in config.items():
+        if not isinstance(values, Mapping):
+            continue
+        for key in values:
+            prop = key_schema((section, key), schema_path)
+            if "x-drawn" in prop:
+                problems += _drawing(section, key, values, prop, schema_path)
+    return problems
+
+
+def _drawing(
+    section: str,
+    key: str,
+    values: Mapping[str, Any],
+    prop: Mapping[str, Any],
+    schema_path: str | os.PathLike[str],
+) -> list[Problem]:
+    tt = _turntable()
+    times, drawn = prop["x-solution-times"], prop["x-drawn"]
+    at: KeyPath = (section, key)
+    value, k, mu0 = values[key], values[times["k"]], values[times["mu0"]]
+    mu0s = mu0 if isinstance(mu0, list) else [mu0]
+    if isinstance(value[0], list):  # one span per mu0 (their number is checked before)
+        cases = [((*at, i), span, [m]) for i, (span, m) in enumerate(zip(value, mu0s, strict=True))]
+    else:
+        cases = [(at, value, mu0s)]
+    count_key = drawn.get("n_points")
+    n = values[count_key] if count_key else None
+    problems = []
+    for where, (t0, t1), cands in cases:
+        # (what, its growth rate and the rate's name, its fastest angular frequency) of every
+        # motion drawn
+        motions = []
+        for m in cands:
+            s = tt.spectrum(m, k)
+            motions.append(
+                (f"the slipping ball (mu0 = {m:g})", float(s.alpha1), "alpha1", float(s.beta))
+            )
+            if times.get("rolling"):
+                delta = float(tt.rolling.matched_delta(m, k, values[times["rolling"]]))
+                r = tt.rolling.spectrum(delta, k)
+                rate, freq = float(r.sigma_g), max(abs(float(r.nu_g)), abs(float(r.nu_c)))
+                motions.append((f"the rolling ball (delta = {delta:.3g})", rate, "sigma_g", freq))
+        span = f"{dotted(where)} = [{t0:g}, {t1:g}]"
+        if n is not None:
+            turns, what = max(
+                (freq * (t1 - t0) / (2 * math.pi), what) for what, *_, freq in motions
+            )
+            if n - 1 < MIN_POINTS_PER_TURN * turns:
+                needed = math.ceil(MIN_POINTS_PER_TURN * turns) + 1
+                most = key_schema((section, count_key), schema_path).get("maximum", needed)
+                more = f"{count_key} >= {needed}, or " if needed <= most else ""
+                longest = (n - 1) / MIN_POINTS_PER_TURN * (t1 - t0) / turns
+                problems.append(
+                    Problem(
+                        where,
+                        f"{span}, drawn at {section}.{count_key} = {n} points, holds {turns:.4g} "
+                        f"turns of {what}: {(n - 1) / turns:.2g} points per turn; "
+                        f"expected at least {MIN_POINTS_PER_TURN} per turn: {more}a span at "
+                        f"most {longest:.4g} long",
+                    )
+                )
+        rate, name, what = max((rate, name, what) for what, rate, name, _ in motions)
+        if rate * t1 > math.log(MAX_GROWTH):
+            problems.append(
+                Problem(
+                    where,
+                    f"{span}: by t = {t1:g}, {what} has grown by e^({name} t) = "
+                    f"10^{rate * t1 / math.log(10):.3g} ({name} = {rate:.3g}), more than a "
+                    f"figure can show; expected a growth of at most {MAX_GROWTH:.0e} ({name} "
+                    f"t_end <= {math.log(MAX_GROWTH):.3g}): t_end <= "
+                    f"{math.log(MAX_GROWTH) / rate:.4g}",
+                )
+            )
+    return problems
+
+
 def film_time_problems(config: Mapping[str, Any]) -> list[Problem]:
     """The film of section ``film`` ends where every motion it is compared with is
     representable: each synthetic film (section ``synthetic_film``), and, over the range of
@@ -832,6 +928,7 @@ def problems(
         lambda: film_problems(config),
         lambda: solution_time_problems(config, schema_path),
         lambda: film_time_problems(config) + animation_problems(config),
+        lambda: drawing_problems(config, schema_path),
     ):
         found = stage()
         if found:

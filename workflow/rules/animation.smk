@@ -7,8 +7,7 @@
 
 rule animation:
     input:
-        code=PACKAGE + STYLE,
-        script=source("scripts/animation.py"),
+        **notebook_inputs("scripts/animation.py"),
     output:
         gif=ensure(
             report(
@@ -28,4 +27,4 @@ rule animation:
     params:
         **config["animation"],
     script:
-        NOTEBOOK_DRIVER
+        NOTEBOOK_JOB

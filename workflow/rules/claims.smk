@@ -5,8 +5,7 @@
 
 rule claims:
     input:
-        code=PACKAGE,
-        script=source("scripts/claims_report.py"),
+        **notebook_inputs("scripts/claims_report.py"),
     output:
         json=ensure("results/claims.json", non_empty=True),
         md=ensure("results/claims.md", non_empty=True),
@@ -20,4 +19,4 @@ rule claims:
     params:
         claims=config["claims"],
     script:
-        NOTEBOOK_DRIVER
+        NOTEBOOK_JOB

@@ -3,6 +3,12 @@
 import os
 from pathlib import Path
 
+# The project's files a script imports (workflow/code_inputs.py, read from the script's
+# import statements): the input `code` of its job, so that editing a file reruns exactly the
+# jobs whose script imports it. The package src/turntable/ counts as a whole (every file of
+# it, found by glob: a new module counts too; hidden files and editor backups do not).
+from code_inputs import code_inputs, package_sources
+
 # The root of the repository (the main Snakefile is workflow/Snakefile).
 ROOT = Path(workflow.basedir).parent
 
@@ -15,47 +21,33 @@ def source(path):
     return os.path.relpath(ROOT / path)
 
 
-# Files under a source folder that are not sources: compiled Python, and what editors and
-# tools leave beside a file (vim's .name.swp, emacs's name~ and #name#, patch leftovers).
-NOT_SOURCES = ("~", ".swp", ".swo", ".swx", ".bak", ".orig", ".rej", ".pyc", ".pyo")
-
-
-def is_source(path, folder):
-    """Whether `path`, a file under `folder`, is a source: not hidden (no part of it below
-    `folder` starts with a dot: .name.swp, .mypy_cache/), not compiled, not a backup."""
-    parts = path.relative_to(folder).parts
-    return (
-        path.is_file()
-        and "__pycache__" not in parts
-        and not any(part.startswith(".") for part in parts)
-        and not path.name.endswith(NOT_SOURCES)
-        and not (path.name.startswith("#") and path.name.endswith("#"))
-    )
-
-
-def sources(folder):
-    """Every source file under `folder` of the repository (found by glob: a new module is
-    included), as paths from source(); hidden files, editor backups and compiled Python
-    left out (see is_source), so that opening a file in an editor reruns nothing.
+def code(script):
+    """The files of the project that `script` (relative to the repository) imports, as paths
+    from source(): the package's when it imports turntable, scripts/_style/ when it draws
+    (scripts/_style/animation.py only for the animation), a helper of workflow/scripts/.
     """
-    top = Path(ROOT, folder)
-    return sorted(
-        source(p.relative_to(ROOT)) for p in top.rglob("*") if is_source(p, top)
-    )
+    return [source(p) for p in code_inputs(script)]
 
 
-# The package: an input of every job whose script imports turntable, so that editing any
-# file of src/turntable/ reruns every such job (and nothing else).
-PACKAGE = sources("src/turntable")
-# The shared plotting module and matplotlib style: inputs of every job that draws, so that
-# editing them redraws every figure (and nothing else).
-STYLE = sources("scripts/_style")
+# The package: an input of a job that runs it other than through a script (`turntable fit`).
+PACKAGE = [source(p) for p in package_sources()]
 
-# Each script of scripts/ runs once per job, as a Jupyter notebook, through this driver
-# (the rule's `script:`); the job writes the notebook with its outputs beside its other
-# outputs. A rule gives the script as input `script`, the code it depends on as input
-# `code`, and the notebook as output `notebook`: see notebook().
-NOTEBOOK_DRIVER = "../scripts/run_notebook.py"
+# Each script of scripts/ runs once per job, as a Jupyter notebook, through the driver
+# workflow/scripts/run_notebook.py; the job writes the notebook with its outputs beside its
+# other outputs. The rule's `script:` is the stub NOTEBOOK_JOB, which runs the driver: the
+# driver is an input, compared by content, so that touching it reruns nothing (Snakemake
+# compares a `script:` by modification time alone). A rule takes its inputs `script`,
+# `driver` and `code` from notebook_inputs() and its output `notebook` from notebook().
+NOTEBOOK_JOB = "../scripts/notebook_job.py"
+DRIVER = source("workflow/scripts/run_notebook.py")
+
+
+def notebook_inputs(script):
+    """Inputs of the job that runs `script` (scripts/<name>.py) as a notebook: the script,
+    the driver, and the code the script imports."""
+    return {"script": source(script), "driver": DRIVER, "code": code(script)}
+
+
 NOTEBOOKS = []
 
 
@@ -71,10 +63,10 @@ def notebook(name, **wildcards):
 
 
 # What a figure of workflow/figures.yaml needs beyond the rule that figures.smk generates for
-# it (its script, the package and the style as inputs; the PDF, the PNG and the notebook as
-# outputs; its section of the configuration and the resolution as params), by figure name:
-# {"input": {...}, "output": {...}, "params": {...}}, filled by the rules files included
-# before figures.smk (film.smk).
+# it (notebook_inputs() as inputs; the PDF, the PNG and the notebook as outputs; its section
+# of the configuration and the resolution as params), by figure name: {"input": {...},
+# "output": {...}, "params": {...}}, filled by the rules files included before figures.smk
+# (film.smk).
 FIGURE_EXTRAS = {}
 
 

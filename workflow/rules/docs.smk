@@ -8,7 +8,7 @@ rule readme_figure:
     input:
         "figures/fig4_trajectories.png",
     output:
-        "docs/fig4_trajectories.png",
+        ensure("docs/fig4_trajectories.png", non_empty=True),
     log:
         "logs/readme_figure.log",
     localrule: True
@@ -24,7 +24,7 @@ rule readme_animation:
     input:
         "figures/animation.gif",
     output:
-        "docs/animation.gif",
+        ensure("docs/animation.gif", non_empty=True),
     log:
         "logs/readme_animation.log",
     localrule: True

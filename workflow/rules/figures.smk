@@ -15,8 +15,7 @@ for name in FIGURE_NAMES:
             name
         input:
             **FIGURE_EXTRAS.get(name, {}).get("input", {}),
-            code=PACKAGE + STYLE,
-            script=source(f"scripts/{name}.py"),
+            **notebook_inputs(f"scripts/{name}.py"),
         output:
             **FIGURE_EXTRAS.get(name, {}).get("output", {}),
             pdf=ensure(f"figures/{name}.pdf", non_empty=True),
@@ -40,7 +39,7 @@ for name in FIGURE_NAMES:
             **FIGURE_EXTRAS.get(name, {}).get("params", {}),
             dpi=config["style"]["dpi"],
         script:
-            NOTEBOOK_DRIVER
+            NOTEBOOK_JOB
 
 
 rule figures:

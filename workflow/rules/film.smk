@@ -44,8 +44,7 @@ os.environ["PATH"] = os.pathsep.join(
 
 rule synthetic_film:
     input:
-        code=PACKAGE,
-        script=source("scripts/synthetic_film.py"),
+        **notebook_inputs("scripts/synthetic_film.py"),
     output:
         csv=[ensure(path, non_empty=True) for path in FILM_CSV],
         truth=ensure(FILM_TRUTH, non_empty=True),
@@ -60,7 +59,7 @@ rule synthetic_film:
         film=config["film"],
         films=FILM_SPECS,
     script:
-        NOTEBOOK_DRIVER
+        NOTEBOOK_JOB
 
 
 rule fit_film:
@@ -99,8 +98,7 @@ rule film_page:
         measurability=FILM_MEASURABILITY,
         pngs=expand("figures/{name}.png", name=FILM_FIGURES),
         captions=[source(f"workflow/report/{name}.rst") for name in FILM_FIGURES],
-        helper=source("workflow/scripts/report_figure.py"),
-        code=PACKAGE,
+        code=code("workflow/scripts/film_page.py"),
     output:
         ensure(
             report(

@@ -11,8 +11,7 @@ PAPER_SOURCES = sorted(
 
 rule paper:
     input:
-        code=PACKAGE,
-        script=source("scripts/build_paper.py"),
+        **notebook_inputs("scripts/build_paper.py"),
         sources=PAPER_SOURCES,
         claims="results/claims.json",
         film=FILM_RESULTS,
@@ -34,4 +33,4 @@ rule paper:
         # commit or the dirty state changes
         git_state=GIT_STATE,
     script:
-        NOTEBOOK_DRIVER
+        NOTEBOOK_JOB

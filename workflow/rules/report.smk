@@ -11,7 +11,7 @@ report: "../report/workflow.rst"
 rule claims_table:
     input:
         "results/claims.json",
-        code=PACKAGE,
+        code=code("workflow/scripts/claims_table.py"),
     output:
         ensure(
             report(
@@ -39,7 +39,7 @@ rule figure_gallery:
         captions=[source(f"workflow/report/{name}.rst") for name in FIGURE_NAMES],
         animation="figures/animation.gif",
         animation_caption=source("workflow/report/animation.rst"),
-        helper=source("workflow/scripts/report_figure.py"),
+        code=code("workflow/scripts/figure_gallery.py"),
     output:
         ensure(
             report(

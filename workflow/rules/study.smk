@@ -14,8 +14,7 @@ STUDY_OUTPUTS = [
 
 rule study_k:
     input:
-        code=PACKAGE,
-        script=source("scripts/study_k.py"),
+        **notebook_inputs("scripts/study_k.py"),
     output:
         json=ensure("results/study/k_{k}.json", non_empty=True),
         notebook=notebook("study_k_{k}", k=STUDY_K),
@@ -34,13 +33,12 @@ rule study_k:
         t_span=config["study"]["t_span"],
         n_times=config["study"]["n_times"],
     script:
-        NOTEBOOK_DRIVER
+        NOTEBOOK_JOB
 
 
 rule study:
     input:
-        code=PACKAGE + STYLE,
-        script=source("scripts/study_summary.py"),
+        **notebook_inputs("scripts/study_summary.py"),
         results=expand("results/study/k_{k}.json", k=STUDY_K),
     output:
         json=ensure("results/study/summary.json", non_empty=True),
@@ -63,4 +61,4 @@ rule study:
     params:
         dpi=config["style"]["dpi"],
     script:
-        NOTEBOOK_DRIVER
+        NOTEBOOK_JOB

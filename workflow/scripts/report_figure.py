@@ -1,8 +1,9 @@
 """One figure of an HTML page of the report, with its caption (shared by the report's pages).
 
 Imported by workflow/scripts/figure_gallery.py and workflow/scripts/film_page.py (Snakemake
-puts the folder of a rule's script on the import path); both rules list this file as input
-``helper``, so that editing it rebuilds both pages. Captions are the report's own
+puts the folder of a rule's script on the import path); both rules list this file in their
+input ``code`` (workflow/code_inputs.py finds the import), so that editing it rebuilds both
+pages. Captions are the report's own
 (workflow/report/<figure>.rst, Jinja templates of the configuration, rendered as Snakemake
 renders them, then RST to HTML with docutils, which stops at any warning); the image is
 embedded, so a page is self-contained.

@@ -1,6 +1,7 @@
 """Run one script of scripts/ as a Jupyter notebook: the job's one execution of the script.
 
-The ``script:`` of every rule that runs a script of scripts/ (see workflow/rules/common.smk).
+Run by workflow/scripts/notebook_job.py, the ``script:`` of every rule that runs a script of
+scripts/ (see workflow/rules/common.smk), of which this driver is input ``driver``.
 The script (input ``script``) is read with jupytext, its ``# %%`` cells becoming notebook
 cells and its docstring a Markdown cell. A first code cell defines the job's ``snakemake``
 object from plain values (its inputs but the code, its outputs but the notebook, log,
@@ -44,15 +45,16 @@ from traitlets.config import Config
 SCRIPT = Path(snakemake.input.script)
 NOTEBOOK = Path(snakemake.output.notebook)
 
-# Inputs the script does not read: its own source and the code the job depends on.
-NOT_SHOWN_INPUTS = {"script", "code"}
+# Inputs the script does not read: its own source, this driver and the code the job
+# depends on.
+NOT_SHOWN_INPUTS = {"script", "driver", "code"}
 
 PREAMBLE = '''\
 # The `snakemake` object that rule {rule} gives {script}.
 # Run by the workflow, this notebook wrote the job's outputs. Run by hand, it writes
 # them, and the log, under OUT = {outdir}/
 # instead, so that it never overwrites what the workflow built.
-# (Inputs left out: the script and the code the job depends on.)
+# (Inputs left out: the script, the notebook driver and the code the job depends on.)
 import os
 import sys
 from pathlib import Path

@@ -76,7 +76,7 @@ def resolve_params(params: Mapping[str, Any] | None = None) -> dict[str, Any]:
     ``params.schema.yaml`` of this package (see `params_schema`), the same the workflow
     validates the ``claims:`` section of ``config/config.yaml`` against; an integer must
     be an ``int`` (not ``400.0``). The one rule a schema cannot express is added here:
-    ``mu0_range`` is increasing.
+    ``mu0_range`` is increasing. (That ``state_si`` is not all zero is the schema's.)
 
     Parameters
     ----------
@@ -105,15 +105,14 @@ def resolve_params(params: Mapping[str, Any] | None = None) -> dict[str, Any]:
             known = sorted(schema["properties"])
             raise ValueError(f"unknown claims parameter(s): {err.message}; known: {known}")
         described = schema["properties"].get(err.absolute_path[0], {}).get("description", "")
-        raise ValueError(f"params{path}: {err.message} (expected: {described.strip()})")
+        # jsonschema words a `not` as "... should not be valid under {schema}": the
+        # description says what is wanted (e.g. state_si: "not all zero")
+        message = f"{err.instance!r} is not allowed" if err.validator == "not" else err.message
+        raise ValueError(f"params{path}: {message} (expected: {' '.join(described.split())})")
     low, high = p["mu0_range"]
     if not low < high:
         raise ValueError(
             f"params['mu0_range'] must be [low, high] with low < high; got {low, high}"
-        )
-    if not any(p["state_si"]):
-        raise ValueError(
-            f"params['state_si'] must not be all zero (m, m/s, rad/s); got {p['state_si']}"
         )
     return {
         key: (value if _property_type(schema["properties"][key]) == "integer" else _as_float(value))

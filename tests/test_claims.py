@@ -626,6 +626,140 @@ def test_rolling_solution_with_a_wrong_inertia_ratio_fails(monkeypatch: pytest.M
     assert claims.evaluate("comparison.rolling_resistance", SMALL)["verdict"] == "failed"
 
 
+def test_equal_power_on_the_slipping_spin_fails(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Comparison (b) charged on the slipping ball's own spin (which a ball rolling along the
+    path cannot have): the matched delta no longer agrees with the eigenvector reference."""
+    from turntable import rolling
+
+    monkeypatch.setattr(rolling, "equal_power_delta", rolling.own_spin_power_delta)
+    assert claims.evaluate("comparison.rolling_resistance", SMALL)["verdict"] == "failed"
+
+
+def test_slipping_orbital_rate_shifted_at_first_order_fails(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """beta - k/(k+1) of first order in 1/mu0 (instead of second): the order check fails."""
+    exact = turntable.spectrum
+
+    def shifted(mu0: Any, k: Any) -> Any:
+        s = exact(mu0, k)
+        return s._replace(beta=s.beta - s.alpha1)
+
+    monkeypatch.setattr(turntable, "spectrum", shifted)
+    result = claims.evaluate("comparison.rolling_resistance", SMALL)
+    assert result["verdict"] == "failed"
+    assert abs(result["reproduced"]["slipping_orbital_shift_order_in_mu0"] + 1.0) < 0.01
+
+
+def test_rolling_orbital_rate_shifted_at_first_order_fails(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Im lambda_g - k/(k+1) of first order in delta: the order check fails (as does the
+    spectrum against 50 digits)."""
+    from turntable import rolling
+
+    exact = rolling.spectrum
+
+    def shifted(delta: Any, k: Any) -> rolling.RollingSpectrum:
+        s = exact(delta, k)
+        return s._replace(nu_g=s.nu_g + s.sigma_g)
+
+    monkeypatch.setattr(rolling, "spectrum", shifted)
+    result = claims.evaluate("comparison.rolling_resistance", SMALL)
+    assert result["verdict"] == "failed"
+    assert abs(result["reproduced"]["rolling_orbital_shift_order_in_delta"] - 1.0) < 0.01
+
+
+def _ratios(*values: Any) -> dict[str, np.ndarray]:
+    return {f"c{i}": np.asarray(v, dtype=float) for i, v in enumerate(values)}
+
+
+@pytest.mark.parametrize(
+    ("ratios", "expected"),
+    [
+        # slipping much faster under every comparison, measure and coefficient
+        pytest.param(_ratios([2.0, 50.0], [3.0, 2.0]), "confirmed", id="all-much-faster"),
+        # slipping faster everywhere, but only by less than the factor somewhere
+        pytest.param(_ratios([1.5, 50.0], [3.0, 2.0]), "undecidable", id="faster-not-much"),
+        # slipping merely faster everywhere: not "much", and no mechanism much faster
+        pytest.param(_ratios([1.1, 1.9], [1.01, 1.5]), "failed", id="merely-faster"),
+        # rolling faster everywhere but never much: neither reading holds
+        pytest.param(_ratios([0.6, 0.9], [0.51, 0.99]), "failed", id="rolling-merely-faster"),
+        # rolling much faster everywhere: the other reading of "in this case"
+        pytest.param(_ratios([0.1, 0.5], [0.2, 0.3]), "undecidable", id="rolling-much-faster"),
+        # each mechanism much faster for some coefficient
+        pytest.param(_ratios([10.0, 0.1], [3.0, 0.3]), "undecidable", id="depends"),
+        # much faster under one comparison, alike under another
+        pytest.param(_ratios([10.0, 5.0], [1.0, 1.0]), "undecidable", id="comparison"),
+    ],
+)
+def test_much_faster_verdict_decides_each_branch(ratios: Any, expected: str) -> None:
+    from turntable.claims._checks_comparison import much_faster_verdict
+
+    assert much_faster_verdict(ratios, 2.0) == expected
+
+
+def test_much_faster_verdict_refuses_bad_input() -> None:
+    from turntable.claims._checks_comparison import much_faster_verdict
+
+    with pytest.raises(ValueError, match="factor"):
+        much_faster_verdict(_ratios([3.0]), 1.0)
+    with pytest.raises(ValueError, match="ratios"):
+        much_faster_verdict(_ratios([3.0, np.nan]), 2.0)
+    with pytest.raises(ValueError, match="ratios"):
+        much_faster_verdict(_ratios([3.0, 0.0]), 2.0)
+
+
+@pytest.mark.parametrize("factor", [1.05, 1.5, 2.0, 4.0, 9.0, 20.0, 100.0])
+@pytest.mark.parametrize(
+    "ratios",
+    [
+        _ratios([2.0, 50.0], [3.0, 8.0]),
+        _ratios([1.1, 1.9], [1.01, 1.5]),
+        _ratios([0.1, 0.5], [0.2, 0.3]),
+        _ratios([10.0, 0.1], [3.0, 0.3]),
+    ],
+    ids=["faster", "merely", "rolling", "depends"],
+)
+def test_factors_with_the_same_verdict(ratios: Any, factor: float) -> None:
+    """Every factor inside the reported range gives the verdict of ``factor``; just outside
+    it, another."""
+    from turntable.claims._checks_comparison import (
+        factors_with_the_same_verdict,
+        much_faster_verdict,
+    )
+
+    values = np.concatenate(list(ratios.values()))
+    low, high = factors_with_the_same_verdict(values.min(), values.max(), factor)
+    verdict = much_faster_verdict(ratios, factor)
+    assert low < factor
+    assert high is None or factor <= high
+    inside = [x for x in (low * 1.0001, high) if x is not None and x > 1.0]
+    assert all(much_faster_verdict(ratios, x) == verdict for x in inside)
+    if high is not None:
+        assert much_faster_verdict(ratios, high * 1.0001) != verdict
+    if low > 1.0:
+        assert much_faster_verdict(ratios, low) != verdict
+
+
+def test_rolling_comparison_much_faster_factor_is_a_parameter() -> None:
+    """The factor comes from the parameters: with a factor above every ratio either way the
+    verdict would be failed; the reported range says where that starts."""
+    result = evaluated("comparison.rolling_resistance")
+    assert (
+        result["reproduced"]["much_faster_factor"]
+        == claims.resolve_params(config_params())["much_faster_factor"]
+    )
+    low, high = result["reproduced"]["much_faster_factors_with_this_verdict"]
+    assert low == 1.0
+    assert high == pytest.approx(
+        max(
+            result["reproduced"]["largest_slipping_over_rolling"],
+            1 / result["reproduced"]["smallest_slipping_over_rolling"],
+        )
+    )
+
+
 # Reports -------------------------------------------------------------------------------
 
 

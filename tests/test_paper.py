@@ -367,7 +367,8 @@ ASCII_MATH = re.compile(
 
 
 def test_appendix_typesets_the_registry_mathematics(paper_tree: Path) -> None:
-    """The registry's strings, as the appendix shows them (show: ascii-math), exported to HTML:
+    """The registry's strings, as the appendix shows them (show: ascii-math, one run of text per
+    sentence), exported to HTML:
     no plain-text mathematics is left, nothing is swallowed (balanced parentheses, final
     full stops), and claim ids are left as they are."""
     import typst
@@ -376,7 +377,7 @@ def test_appendix_typesets_the_registry_mathematics(paper_tree: Path) -> None:
     doc.write_text(
         '#import "values.typ": *\n#show: ascii-math\n'
         "#for id in report.order {\n  let c = claim(id)\n"
-        "  for s in (c.paper_value.text, c.summary, c.evidence, id) { par(s) }\n}\n",
+        "  for s in (c.paper_value.text, c.summary, c.evidence, id) { par(sentences(s)) }\n}\n",
         encoding="utf-8",
     )
     page = typst.compile(str(doc), root=str(paper_tree), format="html").decode()

@@ -74,6 +74,7 @@ PUBLIC_ROLLING: list[Callable[..., Any]] = [
     rolling.power_rolling,
     rolling.power_slipping,
     rolling.equal_power_delta,
+    rolling.own_spin_power_delta,
     rolling.equal_decay_delta,
     rolling.matched_delta,
     rolling.growth_per_turn_ratio,
@@ -518,7 +519,11 @@ def test_rolling_finite_output_everywhere(k: float) -> None:
             assert np.all(np.isfinite(rolling.system_matrix(delta, k)))
             assert np.all(np.isfinite(rolling.solve(z0, t, delta, k)))
             assert np.all(np.isfinite(np.asarray(rolling.modal_terms(z0, t, delta, k))))
-        for matched in (rolling.equal_power_delta, rolling.equal_decay_delta):
+        for matched in (
+            rolling.equal_power_delta,
+            rolling.own_spin_power_delta,
+            rolling.equal_decay_delta,
+        ):
             delta = matched(MU0_EXTREME, k)
             assert np.all(np.isfinite(delta)), matched.__name__
             assert np.all(delta > 0), matched.__name__

@@ -76,11 +76,15 @@ def notebook(name, **wildcards):
 # {"input": {...}, "output": {...}, "params": {...}}, filled by the rules files included
 # before figures.smk (film.smk).
 FIGURE_EXTRAS = {}
+# Figure 7 marks the factor that "much faster" means in the claims (much_faster_factor of the
+# claims parameters; the script resolves them with their defaults).
+FIGURE_EXTRAS["fig7_rolling_resistance"] = {"params": {"claims": config["claims"]}}
 
 
 def _git_state():
     """(commit, dirty) of the checkout, by turntable.provenance.git_state, loaded from its
-    file alone: importing the package would import numpy and scipy in every Snakemake run."""
+    file alone: importing the package would import numpy and scipy in every Snakemake run.
+    """
     from importlib.util import module_from_spec, spec_from_file_location
 
     spec = spec_from_file_location("_provenance", ROOT / "src/turntable/provenance.py")

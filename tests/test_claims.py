@@ -13,6 +13,7 @@ import functools
 import importlib
 import json
 import math
+import re
 from pathlib import Path
 from typing import Any
 
@@ -25,7 +26,7 @@ import yaml
 import turntable
 from turntable import claims
 from turntable.claims import report
-from turntable.claims._core import mu0_grid, within
+from turntable.claims._core import mu0_grid, split_bound, within
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -43,6 +44,7 @@ FIELDS = {
     "verdict",
     "expected",
     "gist",
+    "decisive",
 }
 
 
@@ -128,31 +130,48 @@ def test_every_claim_records_where_it_is_and_what_the_paper_says() -> None:
 
 def test_registration_refuses_a_claim_without_expected_verdict_or_paper_value() -> None:
     where = claims.Where("Sec. 0")
+    base = {"where": where, "claim": "c.", "method": "m", "gist": "g", "decisive": "a"}
     with pytest.raises(ValueError, match="expected verdict"):
-        claims.register(
-            "x.y",
-            where=where,
-            claim="c.",
-            paper_value={"text": "t"},
-            method="m",
-            expected="probably",
-        )  # type: ignore[arg-type]
+        claims.register("x.y", **base, paper_value={"text": "t"}, expected="probably")  # type: ignore[arg-type]
     with pytest.raises(ValueError, match="paper_value"):
-        claims.register(
-            "x.y", where=where, claim="c.", paper_value={}, method="m", expected="confirmed"
-        )
+        claims.register("x.y", **base, paper_value={}, expected="confirmed")
     with pytest.raises(ValueError, match="gist"):
         claims.register(
-            "x.y",
-            where=where,
-            claim="c.",
-            paper_value={"text": "t"},
-            method="m",
-            expected="confirmed",
-            gist=" ",
+            "x.y", **{**base, "gist": " "}, paper_value={"text": "t"}, expected="confirmed"
         )
+    with pytest.raises(ValueError, match="decisive"):
+        claims.register(
+            "x.y", **{**base, "decisive": ""}, paper_value={"text": "t"}, expected="confirmed"
+        )
+    without = {key: value for key, value in base.items() if key != "decisive"}
+    with pytest.raises(TypeError, match="decisive"):
+        claims.register("x.y", **without, paper_value={"text": "t"}, expected="confirmed")  # type: ignore[call-arg]
     with pytest.raises(ValueError, match="tolerance keys without a reproduced value"):
         claims.Outcome("confirmed", {"a": 1.0}, {"b": 1.0}, "s", "e")
+
+
+@pytest.mark.parametrize("claim_id", claims.claim_ids(), ids=claims.claim_ids())
+def test_every_claim_names_the_value_that_decides_it(claim_id: str) -> None:
+    """The registry names, for each claim, one reproduced value whose bound decides the
+    verdict; it has a bound in the tolerance, and the bound holds."""
+    result = evaluated(claim_id)
+    key = claims.get(claim_id).decisive
+    assert result["decisive"] == key
+    assert key in result["reproduced"]
+    assert key in result["tolerance"]
+    assert within(result["reproduced"][key], result["tolerance"][key])
+
+
+def test_a_check_that_does_not_bound_its_decisive_value_is_refused(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    import dataclasses
+
+    claim = claims.get("spectrum.kernel")
+    wrong = dataclasses.replace(claim, decisive="not_a_reproduced_value")
+    monkeypatch.setitem(claims._BY_ID, "spectrum.kernel", wrong)
+    with pytest.raises(RuntimeError, match="not_a_reproduced_value"):
+        claims.evaluate("spectrum.kernel")
 
 
 def test_unknown_claim_id_names_the_argument() -> None:
@@ -776,6 +795,89 @@ def _small_report() -> dict[str, Any]:
         "summary": report.summarize(records),
         "claims": {r["id"]: r for r in records},
     }
+
+
+def _full_report() -> dict[str, Any]:
+    records = [evaluated(cid) for cid in claims.claim_ids()]
+    return {
+        **_small_report(),
+        "order": claims.claim_ids(),
+        "summary": report.summarize(records),
+        "claims": {r["id"]: r for r in records},
+    }
+
+
+def test_claims_command_prints_each_verdict_and_its_deciding_value(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """``turntable claims REPORT``: one line per claim, in the report's order, with the
+    verdict, the decisive key, its value and its bound exactly as the JSON holds them."""
+    from turntable import cli
+
+    data = json.loads(report.to_json(_full_report()))
+    path = tmp_path / "claims.json"
+    path.write_text(json.dumps(data), encoding="utf-8")
+    assert cli.main(["claims", str(path)]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert len(lines) == len(data["order"])
+    pattern = re.compile(r"^(\S+) +(\S+) +(\S+) = (.+) \((<=|<|>=|>|==) (.+)\)$")
+    for line, cid in zip(lines, data["order"], strict=True):
+        match = pattern.match(line)
+        assert match, line
+        shown_id, verdict, key, value, relation, limit = match.groups()
+        record = data["claims"][cid]
+        assert (shown_id, verdict, key) == (cid, record["verdict"], record["decisive"])
+        assert value == str(record["reproduced"][key])
+        assert (relation, limit) == tuple(map(str, split_bound(record["tolerance"][key])))
+    # the report's own order and numbers: a float printed is the float of the JSON
+    first = data["claims"][data["order"][0]]
+    assert str(first["reproduced"][first["decisive"]]) in lines[0]
+
+
+def test_readme_example_of_the_claims_command_is_current() -> None:
+    """The lines the README shows as output of ``turntable claims`` are lines it prints."""
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    example = text.split(".venv/bin/turntable claims", 1)[1].split("```text\n", 1)[1]
+    shown = example.split("```", 1)[0].splitlines()
+    assert shown
+    printed = {" ".join(line.split()) for line in report.decisive_lines(_full_report())}
+    for line in shown:
+        assert " ".join(line.split()) in printed, line
+
+
+def test_a_verdict_other_than_the_expected_one_may_leave_the_decisive_value_unbounded() -> None:
+    record = {
+        "decisive": "x",
+        "reproduced": {"x": 0.5},
+        "tolerance": {},
+        "verdict": "failed",
+        "expected": "confirmed",
+    }
+    assert report.decisive_value(record) == "x = 0.5 (no bound: expected confirmed)"
+    record["tolerance"] = {"x": {">": 1.0}}
+    assert report.decisive_value(record) == "x = 0.5 (> 1.0)"
+
+
+def test_claims_command_refuses_what_is_not_a_report(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    from turntable import cli
+
+    with pytest.raises(SystemExit) as info:
+        cli.main(["claims", str(tmp_path / "missing.json")])
+    assert info.value.code == cli.BAD_INPUT
+    assert "cannot read" in capsys.readouterr().err
+    old = json.loads(report.to_json(_small_report()))
+    for record in old["claims"].values():
+        del record["decisive"]
+    path = tmp_path / "old.json"
+    path.write_text(json.dumps(old), encoding="utf-8")
+    with pytest.raises(SystemExit) as info:
+        cli.main(["claims", str(path)])
+    assert info.value.code == cli.BAD_INPUT
+    err = capsys.readouterr().err
+    assert "not a claims report with a decisive value per claim" in err
+    assert err.count("\n") == 1
 
 
 def test_reports_are_deterministic() -> None:

@@ -173,6 +173,7 @@ def _order(x: tuple[float, float], y: tuple[float, float]) -> float:
         "the drift of the rolling centre."
     ),
     expected="undecidable",
+    decisive="smallest_slipping_over_rolling",
     gist=(
         "that one spiral untwists much faster than the other: it depends on coefficients "
         "the paper does not give, and on the measure (per turn or per unit time)"

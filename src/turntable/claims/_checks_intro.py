@@ -72,6 +72,7 @@ def _no_slip_run(z0: NDArray[np.float64], k: float, t: NDArray[np.float64]) -> d
         "package's no-slip motion with the same samples."
     ),
     expected="refined",
+    decisive="spin_vector",
     gist=(
         "without slipping the centre circles at a constant rate, but the ball's angular "
         "velocity is not constant"
@@ -230,6 +231,7 @@ def _persistent_slip(mu0: float, k: float) -> float:
         "the growing mode; follow the growth per turn and the slip as mu0 -> 0."
     ),
     expected="confirmed",
+    decisive="scaling_error_rel",
     gist=(
         "the friction enters only as mu0 = mu0_dim/(m Omega): a faster plane means a "
         "smaller mu0, farther from rolling without slipping"

@@ -23,6 +23,7 @@ from turntable.claims._core import Outcome, Where, all_within, random_states, re
     ),
     paper_value={"text": "remainder O(mu0^-2)", "order": -2.0},
     expected="confirmed",
+    decisive="remainder_order_alpha1",
     gist="the large-friction expansion (3.2) of the paper",
     method=(
         "Compare the expansion with the 40-digit eigenvalues of L at the large mu0 values for "
@@ -117,6 +118,7 @@ def _expansion(p: dict[str, Any]) -> Outcome:
         "inertia alone; the expansion (3.2) gives beta -> k/(k+1), alpha1 -> 0"
     },
     expected="confirmed",
+    decisive="beta_error_order",
     gist="the limit beta -> k/(k+1), alpha1 -> 0",
     method=(
         "Derive the no-slip rate independently from the constrained Newton-Euler equations "
@@ -194,6 +196,7 @@ def _frequency(p: dict[str, Any]) -> Outcome:
         "mu0 -> infinity (no rate stated)"
     },
     expected="refined",
+    decisive="layer_jump_error_order",
     gist=(
         "the convergence to rolling without slipping holds on fixed intervals, for the "
         "velocities only outside an initial layer, and not uniformly in time"
@@ -381,6 +384,7 @@ def _slow_projector(big: np.ndarray, mu: float) -> tuple[np.ndarray, np.ndarray,
         "subspace (40-digit alpha1). The time-domain convergence itself is limit.convergence."
     ),
     expected="refined",
+    decisive="slow_growth_rate",
     gist=(
         "infinite friction realises the constraint as a singular limit that selects the "
         "nonholonomic motion from the rolling state with the same position and angular "

@@ -38,6 +38,7 @@ def _states(p: dict[str, Any]) -> list[np.ndarray]:
         "with frequency beta"
     },
     expected="refined",
+    decisive="max_complex_form_eigenvalue_error_rel",
     gist=(
         "the growing and decaying parts oscillate with the same frequency but turn in "
         "opposite senses"
@@ -165,6 +166,7 @@ def _decomposition(p: dict[str, Any]) -> Outcome:
         "y0_fig4": 1.0,
     },
     expected="corrected",
+    decisive="min_minus_sign_error",
     gist="the spiral centre, the paper's (2.8), needs a plus sign in front of vx(0) in y0",
     method=(
         "Project z0 on ker L along the range of L (least squares, no formula) for every k, "
@@ -254,6 +256,7 @@ def _centre(p: dict[str, Any]) -> Outcome:
     ),
     paper_value={"text": "N > exp(2 pi) ~ 535", "N_bound": 535.0},
     expected="confirmed",
+    decisive="min_ratio_alpha2_over_beta",
     gist=(
         "the damping factor per period exceeds exp(2 pi), a sharp bound approached only "
         "as the friction vanishes"
@@ -399,6 +402,7 @@ def _periods_above(
         "periods": 1.0,
     },
     expected="refined",
+    decisive="last_time_above_threshold_near_decaying_periods",
     gist=(
         "the decaying part is negligible after one period for the states of the paper and "
         "for generic states, not for states close to the decaying subspace"
@@ -526,6 +530,7 @@ def _fast_transient(p: dict[str, Any]) -> Outcome:
         "radius ~ exp(alpha1 t) by (2.7)"
     },
     expected="confirmed",
+    decisive="max_growth_rate_error_rel",
     gist="the outward logarithmic spiral about (x0, y0)",
     method=(
         "For the state of Fig. 4, every k and the mu0 of Fig. 4, take exp(L t) z0 over two to "
@@ -609,6 +614,7 @@ def _shape(values: np.ndarray, mu0: np.ndarray, mu0_peak: float) -> tuple[bool, 
     claim="As mu0 grows the spiral untwists more and more slowly.",
     paper_value={"text": "the untwisting slows appreciably as mu0 grows (qualitative, Fig. 4)"},
     expected="refined",
+    decisive="alpha1_decreasing",
     gist=(
         "the untwisting slows with friction per turn for every mu0, per unit time only above mu0*"
     ),

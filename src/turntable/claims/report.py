@@ -30,8 +30,8 @@ VERDICT_MEANINGS: dict[str, str] = {
     "failed": "the numbers contradict it",
 }
 
-#: Version of the layout of ``claims.json``.
-SCHEMA_VERSION = 1
+#: Version of the layout of ``claims.json`` (2: each claim names its ``decisive`` value).
+SCHEMA_VERSION = 2
 
 
 def git_commit(cwd: str | Path | None = None) -> str:
@@ -161,6 +161,43 @@ def values_and_bounds(claim: Mapping[str, Any]) -> str:
     )
 
 
+def decisive_value(claim: Mapping[str, Any]) -> str:
+    """Return ``key = value (bound)`` for the reproduced value that decides the verdict.
+
+    A check that did not reach its expected verdict may leave that value unbounded:
+    ``(no bound: expected <verdict>)`` then.
+    """
+    key = claim["decisive"]
+    bound = claim["tolerance"].get(key)
+    text = f"no bound: expected {claim['expected']}" if bound is None else _bound_text(bound)
+    return f"{key} = {claim['reproduced'][key]} ({text})"
+
+
+def decisive_lines(report: Mapping[str, Any]) -> list[str]:
+    """Return one line per claim, in the report's order: id, verdict, deciding value.
+
+    Parameters
+    ----------
+    report : mapping
+        A claims report (`build_report`, or ``results/claims.json`` read back).
+
+    Returns
+    -------
+    list of str
+        ``<id>  <verdict>  <key> = <value> (<relation> <bound>)``, the columns aligned;
+        the key is the claim's ``decisive`` (`turntable.claims.register`) and value and
+        bound are those of ``reproduced`` and ``tolerance``, as the JSON holds them.
+    """
+    order = list(report["order"])
+    width = max((len(cid) for cid in order), default=0)
+    verdict_width = max(len(v) for v in VERDICTS)
+    return [
+        f"{cid:<{width}}  {report['claims'][cid]['verdict']:<{verdict_width}}  "
+        + decisive_value(report["claims"][cid])
+        for cid in order
+    ]
+
+
 def to_markdown(report: Mapping[str, Any]) -> str:
     """Render a report as a Markdown document with one table row per claim."""
     lines = [
@@ -197,7 +234,10 @@ def to_markdown(report: Mapping[str, Any]) -> str:
     lines += ["", "## Evidence", ""]
     for cid in report["order"]:
         c = report["claims"][cid]
-        lines.append(f"- `{cid}` ({c['verdict']}): {_cell(c['evidence'])}")
+        lines.append(
+            f"- `{cid}` ({c['verdict']}; decided by {_cell(decisive_value(c))}): "
+            f"{_cell(c['evidence'])}"
+        )
     lines += ["", "## Reproduced values and their bounds", ""]
     for cid in report["order"]:
         c = report["claims"][cid]

@@ -689,6 +689,30 @@ def test_rolling_orbital_rate_shifted_at_first_order_fails(
     assert abs(result["reproduced"]["rolling_orbital_shift_order_in_delta"] - 1.0) < 0.01
 
 
+def test_identities_carry_no_bound() -> None:
+    """A value that is exact by construction (key ``identity_*``) is reported, never used as
+    a bound a verdict rests on."""
+    for claim_id in claims.claim_ids():
+        result = evaluated(claim_id)
+        assert not [key for key in result["tolerance"] if key.startswith("identity_")], claim_id
+
+
+def test_fig6_draws_the_fit_the_claim_reports() -> None:
+    """Fig. 6(b) and the article quote one fit: limit_error_fit with the claims parameters."""
+    from turntable.claims._core import clean
+
+    c = claims.resolve_params(config_params())
+    fit = turntable.limit_error_fit(c["state_fig4"], c["t_limit"], c["mu0_limit"], c["k_paper"])
+    reproduced = evaluated("limit.convergence")["reproduced"]
+    assert reproduced["position_order_k_paper"] == clean(fit.order)
+    assert reproduced["position_errors_k_paper"] == clean(fit.error)
+    script = (ROOT / "scripts" / "fig6_limit.py").read_text(encoding="utf-8")
+    assert 'limit_error_fit(c["state_fig4"], c["t_limit"], c["mu0_limit"], c["k_paper"])' in script
+    assert "claims.resolve_params(p.claims)" in script
+    paper = (ROOT / "paper" / "paper.typ").read_text(encoding="utf-8")
+    assert paper.count('rep("limit.convergence", "position_order_k_paper")') >= 2  # text, caption
+
+
 def _ratios(*values: Any) -> dict[str, np.ndarray]:
     return {f"c{i}": np.asarray(v, dtype=float) for i, v in enumerate(values)}
 

@@ -33,6 +33,7 @@ GOOD: dict[str, Any] = {
     "delta": 0.3,
     "xyv": Z_GOOD[:4],
     "comparison": "equal_power",
+    "t_end": 5.0,
 }
 #: A good initial state of the rolling model (on its no-slip constraint).
 Z_ROLL = rolling.state_on_constraint(Z_GOOD[:4])
@@ -55,6 +56,7 @@ PUBLIC: list[Callable[..., Any]] = [
     tt.newton_euler,
     tt.max_time,
     tt.limit_error,
+    tt.limit_error_fit,
     tt.small_friction_expansion,
     tt.nonholonomic_period,
 ]
@@ -132,6 +134,7 @@ BAD: dict[str, list[Any]] = {
     ],
 }
 BAD["k"] = BAD["mu0"]
+BAD["t_end"] = BAD["mu0"]
 BAD["delta"] = BAD["mu0"]
 BAD["xyv"] = [
     pytest.param(np.ones(3), id="len3"),

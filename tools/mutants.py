@@ -472,6 +472,18 @@ MUTANTS = [
         ROLLING_CLAIM,
     ),
     Mutant(
+        "limit-fit-log-base",
+        "limit_error_fit regresses ln(error) on log10(mu0): the order off by a factor ln 10",
+        (
+            (
+                "limits.py",
+                "np.polyfit(np.log(mu0), np.log(error), 1)",
+                "np.polyfit(np.log10(mu0), np.log(error), 1)",
+                1,
+            ),
+        ),
+    ),
+    Mutant(
         "much-faster-without-factor",
         "comparison.rolling_resistance confirmed when slipping is merely faster everywhere "
         "(ratio > 1), with no factor for 'much'",

@@ -76,8 +76,10 @@ def notebook(name, **wildcards):
 # {"input": {...}, "output": {...}, "params": {...}}, filled by the rules files included
 # before figures.smk (film.smk).
 FIGURE_EXTRAS = {}
-# Figure 7 marks the factor that "much faster" means in the claims (much_faster_factor of the
-# claims parameters; the script resolves them with their defaults).
+# Figures that read the claims parameters (the script resolves them with their defaults):
+# Fig. 6(b) draws the fit of limit.convergence, Fig. 7 marks the factor that "much faster"
+# means (much_faster_factor).
+FIGURE_EXTRAS["fig6_limit"] = {"params": {"claims": config["claims"]}}
 FIGURE_EXTRAS["fig7_rolling_resistance"] = {"params": {"claims": config["claims"]}}
 
 

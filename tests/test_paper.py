@@ -362,7 +362,9 @@ def test_article_numbers_its_figures_as_their_files() -> None:
 #: Plain-text mathematics of the registry that the appendix must not show untypeset.
 ASCII_MATH = re.compile(
     r"\b(mu0|alpha[12]?|beta|delta|sigma|lambda|eps|Omega|omega|gamma|infinity|sqrt|P4)\b"
-    r"|\b[ew][12]\b|\b[xyzr]0\b|\b[vw][xyz]\b|\b[xyr]_[a-z]|_\{|\^|<=|>=|->|~|exp\(2 pi\)"
+    r"|\b[ew][12]\b|\b[xyzru]0\b|\b[vw][xyz]\b|\b[xyr]_[a-z]|_\{|\^|<=|>=|->|~|exp\(2 pi\)"
+    # the angular velocity left as a Latin w (w, w_h)
+    r"|\bw\b|_[+-]"
 )
 
 
@@ -410,6 +412,8 @@ def test_appendix_typesets_the_registry_mathematics(paper_tree: Path) -> None:
         assert shown.endswith(".") == source.endswith("."), (shown, source)
     assert "<sub>" in page
     assert "<sup>" in page
+    # "~=" is approximately: N > e^(2 pi) ≈ 535, not ∼ (of the order of)
+    assert any("e⌃2π ≈ 535" in html.unescape(p) for p in paragraphs)
 
 
 # The section "What a film can tell" ---------------------------------------------------------

@@ -254,7 +254,7 @@ def _centre(p: dict[str, Any]) -> Outcome:
         "The decaying part shrinks by a factor N = exp(2 pi |alpha2|/beta) per period with "
         "|alpha2|/beta > 1, so N > exp(2 pi), about 535, for every mu0 and k."
     ),
-    paper_value={"text": "N > exp(2 pi) ~ 535", "N_bound": 535.0},
+    paper_value={"text": "N > exp(2 pi) ~= 535", "N_bound": 535.0},
     expected="confirmed",
     decisive="min_ratio_alpha2_over_beta",
     gist=(

@@ -416,6 +416,14 @@ def test_appendix_typesets_the_registry_mathematics(paper_tree: Path) -> None:
     assert any("e⌃2π ≈ 535" in html.unescape(p) for p in paragraphs)
 
 
+def test_verdict_lists_keep_the_paper_apart_from_the_additions() -> None:
+    """The lists by verdict count the paper's statements and the additions separately."""
+    text = PAPER.read_text(encoding="utf-8")
+    section = text.split("= The verdicts <sec-verdicts>", 1)[1].split("\n= ", 1)[0]
+    assert section.index('verdict-lists("paper")') < section.index('verdict-lists("project")')
+    assert "verdict-lists()" not in text
+
+
 # The section "What a film can tell" ---------------------------------------------------------
 
 
@@ -423,7 +431,7 @@ def test_film_section_is_included_before_the_verdicts() -> None:
     """paper.typ includes film.typ with one line, directly before the verdicts."""
     text = PAPER.read_text(encoding="utf-8")
     assert text.count('#include "film.typ"') == 1
-    assert '#include "film.typ"\n= What was confirmed, refined and corrected' in text
+    assert '#include "film.typ"\n= The verdicts <sec-verdicts>' in text
     film = FILM.read_text(encoding="utf-8")
     assert film.lstrip("/ \n").split("\n")[0]  # a comment says what it is
     for path in ("../results/film/measurability.json", "../results/film/synthetic.json"):

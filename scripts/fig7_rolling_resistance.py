@@ -6,9 +6,11 @@ rolling ball (coefficient delta matched to mu0 by the configured comparison, mid
 from the same state on the no-slip constraint, on one scale; dashed: each spiral's centre
 over time (fixed for slipping, drifting into the turntable's axis for rolling); right:
 distance of each centre from the axis against time. Bottom, against mu0, for slipping and
-for rolling under the comparisons (a) delta = mu0, (b) equal dissipated power, (c) equal
-decay of the non-growing part: left, log growth of the spiral per turn; middle, its growth
-rate per unit time; right, the ratio slipping over rolling of both measures.
+for rolling under the comparisons (a) delta = mu0, (b) equal dissipated power on the same
+path of the centre (each ball with its own spin), (c) equal decay of the non-growing part:
+left, log growth of the spiral per turn; middle, its growth rate per unit time; right, the
+ratio slipping over rolling of both measures, with the factor that "much faster" means in
+the claims registry (much_faster_factor) either way.
 """
 
 # %%
@@ -16,7 +18,7 @@ import numpy as np
 
 import turntable
 from _style import DOUBLE, save, setup, subplots
-from turntable import rolling
+from turntable import claims, rolling
 
 setup(snakemake)
 p = snakemake.params
@@ -74,12 +76,19 @@ for comparison, (color, label) in styles.items():
     ax_q.loglog(mu0, per_turn / turn_r, color=color, label=label)
     ax_q.loglog(mu0, per_time / time_r, color=color, ls=":")
 ax_q.axhline(1.0, color="0.5", lw=0.8)
+factor = claims.resolve_params(p.claims)["much_faster_factor"]
+for level in (factor, 1.0 / factor):
+    ax_q.axhline(level, color="0.6", lw=0.8, ls="--")
+ax_q.plot([], [], color="0.6", lw=0.8, ls="--", label=f"factor {factor:g} either way")
 ax_g.set(xlabel=r"$\mu_0$", ylabel="log growth per turn")
 ax_t.set(xlabel=r"$\mu_0$", ylabel=r"growth rate per unit time $/\Omega$")
 ax_q.set(xlabel=r"$\mu_0$", ylabel="slipping / rolling")
 ax_g.legend(fontsize=6.5, loc="lower left")
 ax_q.plot([], [], "k-", label="per turn")
 ax_q.plot([], [], "k:", label="per unit time")
+# room above the curves for the legend, clear of the lines of the factor
+low, high = ax_q.get_ylim()
+ax_q.set_ylim(low, high * (high / low) ** 1.1)
 ax_q.legend(fontsize=6.5, loc="upper right")
 ax_t.set_title(rf"$k = {p.k:g}$", fontsize=7)
 save(fig, snakemake)

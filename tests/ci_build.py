@@ -68,7 +68,7 @@ def base_config() -> dict[str, Any]:
     config["fig3_modal_terms"]["mu0"] = [0.1]
     config["fig4_trajectories"].update(mu0=[0.3, 1.0], t_span=[[0.0, 20.0], [0.0, 30.0]])
     config["fig5_damping_ratio"]["k"] = [0.4]
-    config["fig6_limit"].update(mu0_trajectories=[10.0], mu0_layer=[100.0], n_error=3)
+    config["fig6_limit"].update(mu0_trajectories=[10.0], mu0_layer=[100.0])
     config["fig7_rolling_resistance"]["n_grid"] = 20
     config["study"].update(k=[0.4], n_points=20, n_times=20)
     config["film"].update(fps=30.0)

@@ -13,6 +13,7 @@ import functools
 import importlib
 import json
 import math
+import re
 from pathlib import Path
 from typing import Any
 
@@ -25,7 +26,7 @@ import yaml
 import turntable
 from turntable import claims
 from turntable.claims import report
-from turntable.claims._core import mu0_grid, within
+from turntable.claims._core import mu0_grid, split_bound, within
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -43,6 +44,7 @@ FIELDS = {
     "verdict",
     "expected",
     "gist",
+    "decisive",
 }
 
 
@@ -128,31 +130,48 @@ def test_every_claim_records_where_it_is_and_what_the_paper_says() -> None:
 
 def test_registration_refuses_a_claim_without_expected_verdict_or_paper_value() -> None:
     where = claims.Where("Sec. 0")
+    base = {"where": where, "claim": "c.", "method": "m", "gist": "g", "decisive": "a"}
     with pytest.raises(ValueError, match="expected verdict"):
-        claims.register(
-            "x.y",
-            where=where,
-            claim="c.",
-            paper_value={"text": "t"},
-            method="m",
-            expected="probably",
-        )  # type: ignore[arg-type]
+        claims.register("x.y", **base, paper_value={"text": "t"}, expected="probably")  # type: ignore[arg-type]
     with pytest.raises(ValueError, match="paper_value"):
-        claims.register(
-            "x.y", where=where, claim="c.", paper_value={}, method="m", expected="confirmed"
-        )
+        claims.register("x.y", **base, paper_value={}, expected="confirmed")
     with pytest.raises(ValueError, match="gist"):
         claims.register(
-            "x.y",
-            where=where,
-            claim="c.",
-            paper_value={"text": "t"},
-            method="m",
-            expected="confirmed",
-            gist=" ",
+            "x.y", **{**base, "gist": " "}, paper_value={"text": "t"}, expected="confirmed"
         )
+    with pytest.raises(ValueError, match="decisive"):
+        claims.register(
+            "x.y", **{**base, "decisive": ""}, paper_value={"text": "t"}, expected="confirmed"
+        )
+    without = {key: value for key, value in base.items() if key != "decisive"}
+    with pytest.raises(TypeError, match="decisive"):
+        claims.register("x.y", **without, paper_value={"text": "t"}, expected="confirmed")  # type: ignore[call-arg]
     with pytest.raises(ValueError, match="tolerance keys without a reproduced value"):
         claims.Outcome("confirmed", {"a": 1.0}, {"b": 1.0}, "s", "e")
+
+
+@pytest.mark.parametrize("claim_id", claims.claim_ids(), ids=claims.claim_ids())
+def test_every_claim_names_the_value_that_decides_it(claim_id: str) -> None:
+    """The registry names, for each claim, one reproduced value whose bound decides the
+    verdict; it has a bound in the tolerance, and the bound holds."""
+    result = evaluated(claim_id)
+    key = claims.get(claim_id).decisive
+    assert result["decisive"] == key
+    assert key in result["reproduced"]
+    assert key in result["tolerance"]
+    assert within(result["reproduced"][key], result["tolerance"][key])
+
+
+def test_a_check_that_does_not_bound_its_decisive_value_is_refused(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    import dataclasses
+
+    claim = claims.get("spectrum.kernel")
+    wrong = dataclasses.replace(claim, decisive="not_a_reproduced_value")
+    monkeypatch.setitem(claims._BY_ID, "spectrum.kernel", wrong)
+    with pytest.raises(RuntimeError, match="not_a_reproduced_value"):
+        claims.evaluate("spectrum.kernel")
 
 
 def test_unknown_claim_id_names_the_argument() -> None:
@@ -640,6 +659,164 @@ def test_rolling_solution_with_a_wrong_inertia_ratio_fails(monkeypatch: pytest.M
     assert claims.evaluate("comparison.rolling_resistance", SMALL)["verdict"] == "failed"
 
 
+def test_equal_power_on_the_slipping_spin_fails(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Comparison (b) charged on the slipping ball's own spin (which a ball rolling along the
+    path cannot have): the matched delta no longer agrees with the eigenvector reference."""
+    from turntable import rolling
+
+    monkeypatch.setattr(rolling, "equal_power_delta", rolling.own_spin_power_delta)
+    assert claims.evaluate("comparison.rolling_resistance", SMALL)["verdict"] == "failed"
+
+
+def test_slipping_orbital_rate_shifted_at_first_order_fails(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """beta - k/(k+1) of first order in 1/mu0 (instead of second): the order check fails."""
+    exact = turntable.spectrum
+
+    def shifted(mu0: Any, k: Any) -> Any:
+        s = exact(mu0, k)
+        return s._replace(beta=s.beta - s.alpha1)
+
+    monkeypatch.setattr(turntable, "spectrum", shifted)
+    result = claims.evaluate("comparison.rolling_resistance", SMALL)
+    assert result["verdict"] == "failed"
+    assert abs(result["reproduced"]["slipping_orbital_shift_order_in_mu0"] + 1.0) < 0.01
+
+
+def test_rolling_orbital_rate_shifted_at_first_order_fails(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Im lambda_g - k/(k+1) of first order in delta: the order check fails (as does the
+    spectrum against 50 digits)."""
+    from turntable import rolling
+
+    exact = rolling.spectrum
+
+    def shifted(delta: Any, k: Any) -> rolling.RollingSpectrum:
+        s = exact(delta, k)
+        return s._replace(nu_g=s.nu_g + s.sigma_g)
+
+    monkeypatch.setattr(rolling, "spectrum", shifted)
+    result = claims.evaluate("comparison.rolling_resistance", SMALL)
+    assert result["verdict"] == "failed"
+    assert abs(result["reproduced"]["rolling_orbital_shift_order_in_delta"] - 1.0) < 0.01
+
+
+def test_identities_carry_no_bound() -> None:
+    """A value that is exact by construction (key ``identity_*``) is reported, never used as
+    a bound a verdict rests on."""
+    for claim_id in claims.claim_ids():
+        result = evaluated(claim_id)
+        assert not [key for key in result["tolerance"] if key.startswith("identity_")], claim_id
+
+
+def test_fig6_draws_the_fit_the_claim_reports() -> None:
+    """Fig. 6(b) and the article quote one fit: limit_error_fit with the claims parameters."""
+    from turntable.claims._core import clean
+
+    c = claims.resolve_params(config_params())
+    fit = turntable.limit_error_fit(c["state_fig4"], c["t_limit"], c["mu0_limit"], c["k_paper"])
+    reproduced = evaluated("limit.convergence")["reproduced"]
+    assert reproduced["position_order_k_paper"] == clean(fit.order)
+    assert reproduced["position_errors_k_paper"] == clean(fit.error)
+    script = (ROOT / "scripts" / "fig6_limit.py").read_text(encoding="utf-8")
+    assert 'limit_error_fit(c["state_fig4"], c["t_limit"], c["mu0_limit"], c["k_paper"])' in script
+    assert "claims.resolve_params(p.claims)" in script
+    paper = (ROOT / "paper" / "paper.typ").read_text(encoding="utf-8")
+    assert paper.count('rep("limit.convergence", "position_order_k_paper")') >= 2  # text, caption
+
+
+def _ratios(*values: Any) -> dict[str, np.ndarray]:
+    return {f"c{i}": np.asarray(v, dtype=float) for i, v in enumerate(values)}
+
+
+@pytest.mark.parametrize(
+    ("ratios", "expected"),
+    [
+        # slipping much faster under every comparison, measure and coefficient
+        pytest.param(_ratios([2.0, 50.0], [3.0, 2.0]), "confirmed", id="all-much-faster"),
+        # slipping faster everywhere, but only by less than the factor somewhere
+        pytest.param(_ratios([1.5, 50.0], [3.0, 2.0]), "undecidable", id="faster-not-much"),
+        # slipping merely faster everywhere: not "much", and no mechanism much faster
+        pytest.param(_ratios([1.1, 1.9], [1.01, 1.5]), "failed", id="merely-faster"),
+        # rolling faster everywhere but never much: neither reading holds
+        pytest.param(_ratios([0.6, 0.9], [0.51, 0.99]), "failed", id="rolling-merely-faster"),
+        # rolling much faster everywhere: the other reading of "in this case"
+        pytest.param(_ratios([0.1, 0.5], [0.2, 0.3]), "undecidable", id="rolling-much-faster"),
+        # each mechanism much faster for some coefficient
+        pytest.param(_ratios([10.0, 0.1], [3.0, 0.3]), "undecidable", id="depends"),
+        # much faster under one comparison, alike under another
+        pytest.param(_ratios([10.0, 5.0], [1.0, 1.0]), "undecidable", id="comparison"),
+    ],
+)
+def test_much_faster_verdict_decides_each_branch(ratios: Any, expected: str) -> None:
+    from turntable.claims._checks_comparison import much_faster_verdict
+
+    assert much_faster_verdict(ratios, 2.0) == expected
+
+
+def test_much_faster_verdict_refuses_bad_input() -> None:
+    from turntable.claims._checks_comparison import much_faster_verdict
+
+    with pytest.raises(ValueError, match="factor"):
+        much_faster_verdict(_ratios([3.0]), 1.0)
+    with pytest.raises(ValueError, match="ratios"):
+        much_faster_verdict(_ratios([3.0, np.nan]), 2.0)
+    with pytest.raises(ValueError, match="ratios"):
+        much_faster_verdict(_ratios([3.0, 0.0]), 2.0)
+
+
+@pytest.mark.parametrize("factor", [1.05, 1.5, 2.0, 4.0, 9.0, 20.0, 100.0])
+@pytest.mark.parametrize(
+    "ratios",
+    [
+        _ratios([2.0, 50.0], [3.0, 8.0]),
+        _ratios([1.1, 1.9], [1.01, 1.5]),
+        _ratios([0.1, 0.5], [0.2, 0.3]),
+        _ratios([10.0, 0.1], [3.0, 0.3]),
+    ],
+    ids=["faster", "merely", "rolling", "depends"],
+)
+def test_factors_with_the_same_verdict(ratios: Any, factor: float) -> None:
+    """Every factor inside the reported range gives the verdict of ``factor``; just outside
+    it, another."""
+    from turntable.claims._checks_comparison import (
+        factors_with_the_same_verdict,
+        much_faster_verdict,
+    )
+
+    values = np.concatenate(list(ratios.values()))
+    low, high = factors_with_the_same_verdict(values.min(), values.max(), factor)
+    verdict = much_faster_verdict(ratios, factor)
+    assert low < factor
+    assert high is None or factor <= high
+    inside = [x for x in (low * 1.0001, high) if x is not None and x > 1.0]
+    assert all(much_faster_verdict(ratios, x) == verdict for x in inside)
+    if high is not None:
+        assert much_faster_verdict(ratios, high * 1.0001) != verdict
+    if low > 1.0:
+        assert much_faster_verdict(ratios, low) != verdict
+
+
+def test_rolling_comparison_much_faster_factor_is_a_parameter() -> None:
+    """The factor comes from the parameters: with a factor above every ratio either way the
+    verdict would be failed; the reported range says where that starts."""
+    result = evaluated("comparison.rolling_resistance")
+    assert (
+        result["reproduced"]["much_faster_factor"]
+        == claims.resolve_params(config_params())["much_faster_factor"]
+    )
+    low, high = result["reproduced"]["much_faster_factors_with_this_verdict"]
+    assert low == 1.0
+    assert high == pytest.approx(
+        max(
+            result["reproduced"]["largest_slipping_over_rolling"],
+            1 / result["reproduced"]["smallest_slipping_over_rolling"],
+        )
+    )
+
+
 # Reports -------------------------------------------------------------------------------
 
 
@@ -656,6 +833,89 @@ def _small_report() -> dict[str, Any]:
         "summary": report.summarize(records),
         "claims": {r["id"]: r for r in records},
     }
+
+
+def _full_report() -> dict[str, Any]:
+    records = [evaluated(cid) for cid in claims.claim_ids()]
+    return {
+        **_small_report(),
+        "order": claims.claim_ids(),
+        "summary": report.summarize(records),
+        "claims": {r["id"]: r for r in records},
+    }
+
+
+def test_claims_command_prints_each_verdict_and_its_deciding_value(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """``turntable claims REPORT``: one line per claim, in the report's order, with the
+    verdict, the decisive key, its value and its bound exactly as the JSON holds them."""
+    from turntable import cli
+
+    data = json.loads(report.to_json(_full_report()))
+    path = tmp_path / "claims.json"
+    path.write_text(json.dumps(data), encoding="utf-8")
+    assert cli.main(["claims", str(path)]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert len(lines) == len(data["order"])
+    pattern = re.compile(r"^(\S+) +(\S+) +(\S+) = (.+) \((<=|<|>=|>|==) (.+)\)$")
+    for line, cid in zip(lines, data["order"], strict=True):
+        match = pattern.match(line)
+        assert match, line
+        shown_id, verdict, key, value, relation, limit = match.groups()
+        record = data["claims"][cid]
+        assert (shown_id, verdict, key) == (cid, record["verdict"], record["decisive"])
+        assert value == str(record["reproduced"][key])
+        assert (relation, limit) == tuple(map(str, split_bound(record["tolerance"][key])))
+    # the report's own order and numbers: a float printed is the float of the JSON
+    first = data["claims"][data["order"][0]]
+    assert str(first["reproduced"][first["decisive"]]) in lines[0]
+
+
+def test_readme_example_of_the_claims_command_is_current() -> None:
+    """The lines the README shows as output of ``turntable claims`` are lines it prints."""
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    example = text.split(".venv/bin/turntable claims", 1)[1].split("```text\n", 1)[1]
+    shown = example.split("```", 1)[0].splitlines()
+    assert shown
+    printed = {" ".join(line.split()) for line in report.decisive_lines(_full_report())}
+    for line in shown:
+        assert " ".join(line.split()) in printed, line
+
+
+def test_a_verdict_other_than_the_expected_one_may_leave_the_decisive_value_unbounded() -> None:
+    record = {
+        "decisive": "x",
+        "reproduced": {"x": 0.5},
+        "tolerance": {},
+        "verdict": "failed",
+        "expected": "confirmed",
+    }
+    assert report.decisive_value(record) == "x = 0.5 (no bound: expected confirmed)"
+    record["tolerance"] = {"x": {">": 1.0}}
+    assert report.decisive_value(record) == "x = 0.5 (> 1.0)"
+
+
+def test_claims_command_refuses_what_is_not_a_report(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    from turntable import cli
+
+    with pytest.raises(SystemExit) as info:
+        cli.main(["claims", str(tmp_path / "missing.json")])
+    assert info.value.code == cli.BAD_INPUT
+    assert "cannot read" in capsys.readouterr().err
+    old = json.loads(report.to_json(_small_report()))
+    for record in old["claims"].values():
+        del record["decisive"]
+    path = tmp_path / "old.json"
+    path.write_text(json.dumps(old), encoding="utf-8")
+    with pytest.raises(SystemExit) as info:
+        cli.main(["claims", str(path)])
+    assert info.value.code == cli.BAD_INPUT
+    err = capsys.readouterr().err
+    assert "not a claims report with a decisive value per claim" in err
+    assert err.count("\n") == 1
 
 
 def test_reports_are_deterministic() -> None:

@@ -334,7 +334,7 @@ def test_a_missing_or_empty_file_is_told_in_one_line(tmp_path: Path) -> None:
 
 def test_many_mistakes_are_listed_in_file_order_and_cut_short(tmp_path: Path) -> None:
     text = CONFIG_TEXT
-    for key in ("dpi: 200", "tilt: 0.35", "n_points: 2000", "n_points: 300", "n_error: 13", "size"):
+    for key in ("dpi: 200", "tilt: 0.35", "n_points: 2000", "n_points: 300", "n_grid: 200", "size"):
         value = key.split(": ")[1] if ": " in key else "320"
         key = key if ": " in key else f"{key}: {value}"
         text = replaced(key, key.replace(value, f'"{value}"'), text)
@@ -875,8 +875,8 @@ END_TO_END = {
         ["fig2_spectrum.mu0_range[0] = '1e-4' is text", "write 1.0e-4"],
     ),
     "missing key": (
-        lambda t: replaced("  n_error: 3\n", "", t),
-        ["missing key 'n_error' in fig6_limit"],
+        lambda t: replaced("  n_grid: 20\n", "", t),
+        ["missing key 'n_grid' in fig7_rolling_resistance"],
     ),
     # Fig. 8 and the fits ended in "math domain error", and the good Fig. 8 was deleted
     "film of 3 frames": (

@@ -89,3 +89,18 @@ def test_limit_error_decays_like_one_over_mu0() -> None:
     assert err.shape == mu0_values.shape
     slope = np.polyfit(np.log(mu0_values), np.log(err), 1)[0]
     assert slope == pytest.approx(-1.0, abs=0.01)
+
+
+def test_limit_error_fit_is_the_least_squares_order_of_limit_error() -> None:
+    """One fit for the claim and Fig. 6(b): limit_error on [0, t_end] and its log-log line."""
+    z0, mu0 = [1.0, 1.0, 0.0, 0.0, 0.0, 1.0], [1e4, 10.0, 1e3, 100.0]
+    fit = turntable.limit_error_fit(z0, 10.0, mu0, 0.4)
+    np.testing.assert_array_equal(fit.mu0, sorted(mu0))
+    t = np.linspace(0.0, 10.0, 1001)
+    np.testing.assert_allclose(fit.error, turntable.limit_error(z0, t, fit.mu0, 0.4), rtol=0)
+    slope, offset = np.polyfit(np.log(fit.mu0), np.log(fit.error), 1)
+    assert fit.order == pytest.approx(slope, rel=1e-14)
+    assert fit.prefactor == pytest.approx(np.exp(offset), rel=1e-14)
+    assert fit.order == pytest.approx(-1.0, abs=0.01)
+    with pytest.raises(ValueError, match=r"^mu0 must hold at least two"):
+        turntable.limit_error_fit(z0, 10.0, [10.0, 10.0], 0.4)

@@ -362,12 +362,15 @@ def test_article_numbers_its_figures_as_their_files() -> None:
 #: Plain-text mathematics of the registry that the appendix must not show untypeset.
 ASCII_MATH = re.compile(
     r"\b(mu0|alpha[12]?|beta|delta|sigma|lambda|eps|Omega|omega|gamma|infinity|sqrt|P4)\b"
-    r"|\b[ew][12]\b|\b[xyzr]0\b|\b[vw][xyz]\b|\b[xyr]_[a-z]|_\{|\^|<=|>=|->|~|exp\(2 pi\)"
+    r"|\b[ew][12]\b|\b[xyzru]0\b|\b[vw][xyz]\b|\b[xyr]_[a-z]|_\{|\^|<=|>=|->|~|exp\(2 pi\)"
+    # the angular velocity left as a Latin w (w, w_h)
+    r"|\bw\b|_[+-]"
 )
 
 
 def test_appendix_typesets_the_registry_mathematics(paper_tree: Path) -> None:
-    """The registry's strings, as the appendix shows them (show: ascii-math), exported to HTML:
+    """The registry's strings, as the appendix shows them (show: ascii-math, one run of text per
+    sentence), exported to HTML:
     no plain-text mathematics is left, nothing is swallowed (balanced parentheses, final
     full stops), and claim ids are left as they are."""
     import typst
@@ -376,7 +379,7 @@ def test_appendix_typesets_the_registry_mathematics(paper_tree: Path) -> None:
     doc.write_text(
         '#import "values.typ": *\n#show: ascii-math\n'
         "#for id in report.order {\n  let c = claim(id)\n"
-        "  for s in (c.paper_value.text, c.summary, c.evidence, id) { par(s) }\n}\n",
+        "  for s in (c.paper_value.text, c.summary, c.evidence, id) { par(sentences(s)) }\n}\n",
         encoding="utf-8",
     )
     page = typst.compile(str(doc), root=str(paper_tree), format="html").decode()
@@ -409,6 +412,16 @@ def test_appendix_typesets_the_registry_mathematics(paper_tree: Path) -> None:
         assert shown.endswith(".") == source.endswith("."), (shown, source)
     assert "<sub>" in page
     assert "<sup>" in page
+    # "~=" is approximately: N > e^(2 pi) ≈ 535, not ∼ (of the order of)
+    assert any("e⌃2π ≈ 535" in html.unescape(p) for p in paragraphs)
+
+
+def test_verdict_lists_keep_the_paper_apart_from_the_additions() -> None:
+    """The lists by verdict count the paper's statements and the additions separately."""
+    text = PAPER.read_text(encoding="utf-8")
+    section = text.split("= The verdicts <sec-verdicts>", 1)[1].split("\n= ", 1)[0]
+    assert section.index('verdict-lists("paper")') < section.index('verdict-lists("project")')
+    assert "verdict-lists()" not in text
 
 
 # The section "What a film can tell" ---------------------------------------------------------
@@ -418,7 +431,7 @@ def test_film_section_is_included_before_the_verdicts() -> None:
     """paper.typ includes film.typ with one line, directly before the verdicts."""
     text = PAPER.read_text(encoding="utf-8")
     assert text.count('#include "film.typ"') == 1
-    assert '#include "film.typ"\n= What was confirmed, refined and corrected' in text
+    assert '#include "film.typ"\n= The verdicts <sec-verdicts>' in text
     film = FILM.read_text(encoding="utf-8")
     assert film.lstrip("/ \n").split("\n")[0]  # a comment says what it is
     for path in ("../results/film/measurability.json", "../results/film/synthetic.json"):

@@ -62,7 +62,19 @@ def test_claims_page_has_one_row_per_claim_with_its_verdict() -> None:
     ("text", "html"),
     [
         pytest.param("mu0^-2", "μ<sub>0</sub><sup>−2</sup>", id="index-and-power"),
-        pytest.param("N > exp(2 pi) ~ 535", "N &gt; e<sup>2π</sup> ∼ 535", id="exp-2pi"),
+        pytest.param("N > exp(2 pi) ~= 535", "N &gt; e<sup>2π</sup> ≈ 535", id="exp-2pi"),
+        pytest.param("error ~ mu0^-1", "error ∼ μ<sub>0</sub><sup>−1</sup>", id="order-of"),
+        pytest.param(
+            "gamma x w, w = r + i v, w1, w_h, v or w.",
+            "γ × ω, ω = r + i v, ω<sub>1</sub>, ω<sub>h</sub>, v or ω.",
+            id="angular-velocity",
+        ),
+        pytest.param("w.r.t. a wall", "w.r.t. a wall", id="w-in-words"),
+        pytest.param(
+            "|1 + i lambda_+|, lambda_- and lambda_{1,2}",
+            "|1 + i λ<sub>+</sub>|, λ<sub>−</sub> and λ<sub>1,2</sub>",
+            id="plus-minus-subscripts",
+        ),
         pytest.param("|alpha2|/beta", "|α<sub>2</sub>|/β", id="greek"),
         pytest.param(
             "error 6.9e-25 <= 1e-06",

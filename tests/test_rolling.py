@@ -2,9 +2,10 @@
 
 References: eigenvalues and matrix exponential at 50 digits of the 4x4 matrix
 read off the constrained 3-D Newton-Euler equations (`turntable.reference`:
-``rolling_spectrum``, ``rolling_solution``, ``rolling_equal_decay_delta``, here
-under their short names ``ref.spectrum``, ...), and a direct numerical
-integration of those equations (`rolling.newton_euler`, DOP853).
+``rolling_spectrum``, ``rolling_solution``, ``rolling_equal_decay_delta``, and
+``rolling_equal_power_delta`` from a high-precision eigenvector of L; here under
+their short names ``ref.spectrum``, ...), and a direct numerical integration of
+those equations (`rolling.newton_euler`, DOP853).
 """
 
 from __future__ import annotations
@@ -180,25 +181,51 @@ def test_zero_state_is_zero_for_ever() -> None:
     assert z.shape == (2, 6)
 
 
-@pytest.mark.parametrize("mu0", [1e-3, 0.1, 1.0, 10.0, 1e4], ids=lambda m: f"mu0={m:g}")
-def test_equal_power_delta_on_the_slipping_spiral(mu0: float) -> None:
-    """Powers on the slipping model's growing mode about the axis, built from tt.solve."""
-    k = 0.4
+def _slipping_spiral(mu0: float, k: float, turns: float = 1.0) -> np.ndarray:
+    """The slipping motion on its growing mode about the axis, from tt.solve."""
     lam = complex(tt.eigenvalues(mu0, k)[0])
     rho, v = 1.0 + 0j, lam
-    w = -1j * lam * rho / k
+    w = -1j * lam * rho / k  # c = v - i k w = 0 on a mode with lambda != 0
     z0 = np.array([rho.real, rho.imag, v.real, v.imag, w.real, w.imag])
-    t = np.linspace(0.0, 2 * np.pi / lam.imag, 65)
+    t = np.linspace(0.0, turns * 2 * np.pi / lam.imag, 65)
     z = tt.solve(z0, t, mu0, k)
     # z0 is on the growing mode: the slipping motion from it is e^{lambda t} z0
     assert_allclose(np.hypot(z[:, 0], z[:, 1]), np.exp(lam.real * t), rtol=1e-10)
-    ratio = np.mean(rolling.power_slipping(z, mu0)) / np.mean(rolling.power_rolling(z, 1.0))
+    return z
+
+
+@pytest.mark.parametrize("mu0", [1e-3, 0.1, 1.0, 10.0, 1e4], ids=lambda m: f"mu0={m:g}")
+def test_equal_power_delta_on_the_same_path(mu0: float) -> None:
+    """Comparison (b): the same path of the centre, each ball with its own kinematics.
+
+    The slipping ball dissipates mu0 |u|^2 with its own slip; a ball rolling along the same
+    path spins with w = r + i v (the no-slip constraint) and dissipates delta |w|^2."""
+    k = 0.4
+    z = _slipping_spiral(mu0, k)
+    rolling_on_path = rolling.state_on_constraint(z[:, :4])
+    assert_allclose(rolling.slip_velocity(rolling_on_path), 0.0, atol=1e-12)
+    slipping = np.mean(rolling.power_slipping(z, mu0))
+    ratio = slipping / np.mean(rolling.power_rolling(rolling_on_path, 1.0))
     assert_allclose(rolling.equal_power_delta(mu0, k), ratio, rtol=1e-8)
+    # Charging the torque on the slipping ball's own spin is the other matching.
+    own = slipping / np.mean(rolling.power_rolling(z, 1.0))
+    assert_allclose(rolling.own_spin_power_delta(mu0, k), own, rtol=1e-8)
+
+
+@pytest.mark.parametrize("k", KS)
+@pytest.mark.parametrize(
+    "mu0", [1e-12, 1e-6, 1e-3, 0.1, 1.0, 10.0, 1e3, 1e6, 1e12], ids=lambda m: f"mu0={m:g}"
+)
+def test_equal_power_delta_matches_the_eigenvector_reference(mu0: float, k: float) -> None:
+    """Against mu0 |u|^2 / |w_roll|^2 on a high-precision eigenvector of L, to 1e-13 relative
+    for mu0 in [1e-12, 1e12] (no cancellation in the package's evaluation)."""
+    assert_allclose(rolling.equal_power_delta(mu0, k), ref.equal_power_delta(mu0, k), rtol=1e-13)
 
 
 def test_equal_power_delta_large_friction_asymptote() -> None:
     k = 0.4
     assert_allclose(rolling.equal_power_delta(1e8, k) * 1e8, k**4 / (k + 1) ** 2, rtol=1e-7)
+    assert_allclose(rolling.own_spin_power_delta(1e8, k) * 1e8, k**4 / (k + 1) ** 2, rtol=1e-7)
 
 
 @pytest.mark.parametrize("mu0", [1e-100, 1e-20, 1e-4, 0.1, 1.0, 100.0], ids=lambda m: f"mu0={m:g}")
@@ -232,9 +259,11 @@ def test_growth_ratio_large_coefficient_limits(comparison: str, limit, k: float)
 
 
 def test_equal_power_delta_small_friction_limit() -> None:
-    """As mu0 -> 0, lambda_+ ~ sqrt(i mu0), so delta_P -> k^2."""
+    """As mu0 -> 0, lambda_+ ~ sqrt(i mu0): u ~ -i r and w_roll ~ r, so delta_P / mu0 -> 1;
+    the slipping spin -i lambda_+ r / k vanishes, so the own-spin matching tends to k^2."""
     for k in (0.05, 0.4, 1.0):
-        assert_allclose(rolling.equal_power_delta(1e-12, k), k**2, rtol=5e-5)  # O(sqrt(mu0) / k)
+        assert_allclose(rolling.equal_power_delta(1e-12, k) / 1e-12, 1.0, rtol=5e-5)
+        assert_allclose(rolling.own_spin_power_delta(1e-12, k), k**2, rtol=5e-5)
 
 
 @pytest.mark.parametrize("k", KS)
@@ -242,23 +271,27 @@ def test_equal_power_delta_small_friction_limit() -> None:
 def test_matched_deltas_at_very_small_friction(mu0: float, k: float) -> None:
     """Far below 1e-12 the matched coefficients are their leading terms to rounding.
 
-    delta_P = k^2 (1 + O(sqrt(mu0) / k)) and delta_c = k sqrt(mu0 / 2) (1 + O(sqrt(mu0) / k))
-    (|sigma_c| = delta / k (1 - O(delta)), |alpha2| = sqrt(mu0 / 2) + O(mu0 / k)): at
-    mu0 <= 1e-100 the corrections are below 1e-48, so both must equal the leading term to
+    delta_P = mu0 (1 + O(sqrt(mu0) / k)), delta_S = k^2 (1 + O(sqrt(mu0) / k)) and
+    delta_c = k sqrt(mu0 / 2) (1 + O(sqrt(mu0) / k)) (|sigma_c| = delta / k (1 - O(delta)),
+    |alpha2| = sqrt(mu0 / 2) + O(mu0 / k)): at mu0 <= 1e-100 the corrections are below
+    1e-48, so each must equal its leading term to
     a few units in the last place (no overflow to inf, no failed bracket).
     """
     with np.errstate(over="raise", invalid="raise", divide="raise"):
         power = rolling.equal_power_delta(mu0, k)
+        own = rolling.own_spin_power_delta(mu0, k)
         decay = rolling.equal_decay_delta(mu0, k)
-    assert_allclose(power, k**2, rtol=1e-14)
+    assert_allclose(power, mu0, rtol=1e-14)
+    assert_allclose(own, k**2, rtol=1e-14)
     assert_allclose(decay, k * np.sqrt(mu0 / 2.0), rtol=1e-14)
 
 
 @pytest.mark.parametrize("k", KS)
 def test_equal_power_delta_at_very_large_friction(k: float) -> None:
-    """delta_P = k^4 / (mu0 (k + 1)^2) (1 + O(1 / mu0)), here to rounding."""
+    """delta_P and delta_S = k^4 / (mu0 (k + 1)^2) (1 + O(1 / mu0)), here to rounding."""
     for mu0 in (1e100, 1e300):
-        assert_allclose(rolling.equal_power_delta(mu0, k) * mu0, k**4 / (k + 1) ** 2, rtol=1e-14)
+        for fn in (rolling.equal_power_delta, rolling.own_spin_power_delta):
+            assert_allclose(fn(mu0, k) * mu0, k**4 / (k + 1) ** 2, rtol=1e-14)
 
 
 def test_matched_delta() -> None:

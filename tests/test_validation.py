@@ -33,6 +33,7 @@ GOOD: dict[str, Any] = {
     "delta": 0.3,
     "xyv": Z_GOOD[:4],
     "comparison": "equal_power",
+    "t_end": 5.0,
 }
 #: A good initial state of the rolling model (on its no-slip constraint).
 Z_ROLL = rolling.state_on_constraint(Z_GOOD[:4])
@@ -55,6 +56,7 @@ PUBLIC: list[Callable[..., Any]] = [
     tt.newton_euler,
     tt.max_time,
     tt.limit_error,
+    tt.limit_error_fit,
     tt.small_friction_expansion,
     tt.nonholonomic_period,
 ]
@@ -74,6 +76,7 @@ PUBLIC_ROLLING: list[Callable[..., Any]] = [
     rolling.power_rolling,
     rolling.power_slipping,
     rolling.equal_power_delta,
+    rolling.own_spin_power_delta,
     rolling.equal_decay_delta,
     rolling.matched_delta,
     rolling.growth_per_turn_ratio,
@@ -131,6 +134,7 @@ BAD: dict[str, list[Any]] = {
     ],
 }
 BAD["k"] = BAD["mu0"]
+BAD["t_end"] = BAD["mu0"]
 BAD["delta"] = BAD["mu0"]
 BAD["xyv"] = [
     pytest.param(np.ones(3), id="len3"),
@@ -518,7 +522,11 @@ def test_rolling_finite_output_everywhere(k: float) -> None:
             assert np.all(np.isfinite(rolling.system_matrix(delta, k)))
             assert np.all(np.isfinite(rolling.solve(z0, t, delta, k)))
             assert np.all(np.isfinite(np.asarray(rolling.modal_terms(z0, t, delta, k))))
-        for matched in (rolling.equal_power_delta, rolling.equal_decay_delta):
+        for matched in (
+            rolling.equal_power_delta,
+            rolling.own_spin_power_delta,
+            rolling.equal_decay_delta,
+        ):
             delta = matched(MU0_EXTREME, k)
             assert np.all(np.isfinite(delta)), matched.__name__
             assert np.all(delta > 0), matched.__name__

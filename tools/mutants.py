@@ -390,8 +390,42 @@ MUTANTS = [
     ),
     Mutant(
         "equal-power-ratio",
-        "(k u) instead of ((k + 1) u): x = k alpha1 (alpha1 = beta tan) in equal_power_delta",
-        (("rolling.py", "x = (k + 1.0) * sp.beta * tan", "x = k * sp.beta * tan", 1),),
+        "(k u) instead of ((k + 1) u) in the slip of the slipping mode: k alpha1 instead of "
+        "(k + 1) alpha1 in equal_power_delta and own_spin_power_delta",
+        (
+            (
+                "rolling.py",
+                "num = np.hypot((k + 1.0) * alpha1, y)",
+                "num = np.hypot(k * alpha1, y)",
+                2,
+            ),
+        ),
+    ),
+    Mutant(
+        "equal-power-own-spin",
+        "comparison (b) charges the rolling torque on the slipping ball's own spin "
+        "-i lambda_+ r / k instead of the rolling spin r + i v on the same path",
+        (
+            (
+                "rolling.py",
+                "den = k * np.hypot(1.0 - beta, alpha1)",
+                "den = beta * np.hypot(1.0, alpha1 / beta)",
+                1,
+            ),
+        ),
+    ),
+    Mutant(
+        "equal-power-rolling-spin-sign",
+        "the ball rolling along the slipping path spins with w = r - i v: |1 - i lambda_+| "
+        "instead of |1 + i lambda_+| in equal_power_delta",
+        (
+            (
+                "rolling.py",
+                "den = k * np.hypot(1.0 - beta, alpha1)",
+                "den = k * np.hypot(1.0 + beta, alpha1)",
+                1,
+            ),
+        ),
     ),
     Mutant(
         "comparison-swap",
@@ -431,6 +465,63 @@ MUTANTS = [
                 "rolling.py",
                 "sigma_c = -(delta + p) / (2.0 * (k + 1.0))",
                 "sigma_c = -(delta + p) / (2.0 * (k + 2.0))",
+                1,
+            ),
+        ),
+        CLAIMS_TESTS,
+        ROLLING_CLAIM,
+    ),
+    Mutant(
+        "limit-fit-log-base",
+        "limit_error_fit regresses ln(error) on log10(mu0): the order off by a factor ln 10",
+        (
+            (
+                "limits.py",
+                "np.polyfit(np.log(mu0), np.log(error), 1)",
+                "np.polyfit(np.log10(mu0), np.log(error), 1)",
+                1,
+            ),
+        ),
+    ),
+    Mutant(
+        "much-faster-without-factor",
+        "comparison.rolling_resistance confirmed when slipping is merely faster everywhere "
+        "(ratio > 1), with no factor for 'much'",
+        (
+            (
+                "claims/_checks_comparison.py",
+                "if np.all(values >= factor):",
+                "if np.all(values > 1.0):",
+                1,
+            ),
+        ),
+        CLAIMS_TESTS,
+        "much_faster or factors",
+    ),
+    Mutant(
+        "much-faster-failed-one-sided",
+        "comparison.rolling_resistance failed whenever slipping is never much faster, "
+        "although rolling may be (the other reading of 'in this case')",
+        (
+            (
+                "claims/_checks_comparison.py",
+                "if np.all((values > 1.0 / factor) & (values < factor)):",
+                "if np.all(values < factor):",
+                1,
+            ),
+        ),
+        CLAIMS_TESTS,
+        "much_faster or factors",
+    ),
+    Mutant(
+        "rolling-claim-equal-power-own-spin",
+        "comparison (b) charged on the slipping ball's own spin (killed by the "
+        "comparison.rolling_resistance claim: delta_P against the eigenvector reference)",
+        (
+            (
+                "rolling.py",
+                "den = k * np.hypot(1.0 - beta, alpha1)",
+                "den = beta * np.hypot(1.0, alpha1 / beta)",
                 1,
             ),
         ),

@@ -8,7 +8,13 @@ States are z = (x, y, vx, vy, wx, wy), dimensionless (length R, time
 1/Omega, mass m).
 """
 
-from turntable.limits import limit_error, nonholonomic_period, small_friction_expansion
+from turntable.limits import (
+    LimitErrorFit,
+    limit_error,
+    limit_error_fit,
+    nonholonomic_period,
+    small_friction_expansion,
+)
 from turntable.newton_euler import NewtonEulerResult, newton_euler
 from turntable.solution import (
     ModalTerms,
@@ -40,6 +46,7 @@ __version__ = "0.1.0"
 __all__ = [
     "GOLDEN",
     "Expansion",
+    "LimitErrorFit",
     "ModalTerms",
     "NewtonEulerResult",
     "Peak",
@@ -49,6 +56,7 @@ __all__ = [
     "eigenvalues",
     "large_friction_expansion",
     "limit_error",
+    "limit_error_fit",
     "log_damping_ratio",
     "log_growth_per_turn",
     "max_time",

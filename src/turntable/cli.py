@@ -1,5 +1,11 @@
 """The ``turntable`` command.
 
+``turntable claims [REPORT.json]`` prints, for each claim of a claims report
+(``results/claims.json`` by default, written by ``make``), one line: its id, its verdict
+and the reproduced value that decides it with its bound
+(`turntable.claims.report.decisive_lines`).  A report that cannot be read gets one line on
+stderr and exit status 2.
+
 ``turntable fit DATA.csv --radius R (--omega W | --rpm N) [--k K] [--axis X Y] [--mass M]
 [--fit-omega] [--fit-axis] [--plot FIG.png]`` fits the slipping and the rolling-resistance
 models to a tracked trajectory (`turntable.fit.fit_film`) and prints one JSON object on
@@ -34,6 +40,8 @@ import numpy as np
 from turntable import film as film_io
 from turntable import fit
 
+#: The claims report ``turntable claims`` reads unless told another (written by ``make``).
+DEFAULT_CLAIMS_REPORT = "results/claims.json"
 #: Exit status for bad input (as argparse uses for a bad command line).
 BAD_INPUT = 2
 #: Exit status when the fit was printed but the figure of ``--plot`` could not be drawn.
@@ -114,7 +122,54 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument(
         "--plot", metavar="FIG.png", help="draw data, both fits and the residuals (matplotlib)"
     )
+    _add_claims_parser(sub)
     return parser
+
+
+def _add_claims_parser(sub: Any) -> None:
+    p = sub.add_parser(
+        "claims",
+        help="print each claim's verdict and the value that decides it",
+        description=(
+            "Print one line per claim of a claims report: its id, its verdict and the "
+            "reproduced value that decides the verdict, with its bound (the claim's "
+            "'decisive' key in the registry)."
+        ),
+    )
+    p.add_argument(
+        "report",
+        nargs="?",
+        default=DEFAULT_CLAIMS_REPORT,
+        metavar="REPORT.json",
+        help=f"claims report written by make (default {DEFAULT_CLAIMS_REPORT})",
+    )
+
+
+def claims_command(args: argparse.Namespace) -> int:
+    """Run ``turntable claims``: read the report and print one line per claim."""
+    from turntable.claims.report import decisive_lines
+
+    try:
+        report = json.loads(Path(args.report).read_text(encoding="utf-8"))
+        lines = decisive_lines(report)
+    except OSError as exc:
+        _fail(
+            f"turntable claims: error: cannot read {args.report}: {exc.strerror or exc} "
+            "(make writes results/claims.json)"
+        )
+    except (ValueError, KeyError, TypeError) as exc:
+        _fail(
+            f"turntable claims: error: {args.report} is not a claims report with a "
+            f"decisive value per claim ({type(exc).__name__}: {exc})"
+        )
+    try:
+        sys.stdout.write("\n".join(lines) + "\n")
+        sys.stdout.flush()
+    except BrokenPipeError:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        raise SystemExit(1) from None
+    return 0
 
 
 def _positive(option: str, value: float | None, unit: str) -> None:
@@ -244,6 +299,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(sys.argv[1:] if argv is None else list(argv))
     if args.command == "fit":
         return fit_command(args)
+    if args.command == "claims":
+        return claims_command(args)
     raise AssertionError(args.command)  # argparse allows only the commands above
 
 

@@ -5,6 +5,8 @@ All quantities are dimensionless: length R, time 1/Omega, mass m.
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
@@ -91,3 +93,66 @@ def limit_error(z0: ArrayLike, t: ArrayLike, mu0: ArrayLike, k: float) -> NDArra
     r_nh = nonholonomic(z0, t, k)[:, :2]
     err = [np.max(np.hypot(*(solve(z0, t, m, k)[:, :2] - r_nh).T)) for m in mu0.ravel()]
     return np.reshape(err, mu0.shape)
+
+
+#: Samples of [0, t_end] at which `limit_error_fit` takes the largest position error.
+LIMIT_FIT_TIMES = 1001
+
+
+class LimitErrorFit(NamedTuple):
+    """The largest position error of the no-slip limit and its power law in mu0.
+
+    Attributes
+    ----------
+    mu0 : numpy.ndarray
+        The friction coefficients, increasing.
+    error : numpy.ndarray
+        `limit_error` on [0, t_end] at each mu0.
+    order : float
+        p of the least-squares line ln error = ln c + p ln mu0.
+    prefactor : float
+        c of that line.
+    """
+
+    mu0: NDArray[np.float64]
+    error: NDArray[np.float64]
+    order: float
+    prefactor: float
+
+
+def limit_error_fit(z0: ArrayLike, t_end: float, mu0: ArrayLike, k: float) -> LimitErrorFit:
+    """Return the largest position error on [0, t_end] at each mu0 and its fitted order.
+
+    Parameters
+    ----------
+    z0 : array_like
+        Initial state (x, y, vx, vy, wx, wy), on or off the no-slip constraint.
+    t_end : float
+        End of the fixed interval [0, t_end], finite and > 0.
+    mu0 : array_like
+        At least two different friction coefficients, finite and > 0.
+    k : float
+        Inertia ratio, finite and > 0.
+
+    Returns
+    -------
+    LimitErrorFit
+
+    Notes
+    -----
+    e(mu0) = max over t in [0, t_end] of |r(t; mu0) - r_nh(t)| (`limit_error`, on
+    `LIMIT_FIT_TIMES` equally spaced times), and the least-squares fit
+    ln e = ln c + p ln mu0 over the given mu0.  Section 3: p -> -1 (positions converge
+    uniformly on a fixed interval at rate O(1/mu0)).  The one fit of the order that
+    the claim ``limit.convergence`` reports for the paper's ball and Fig. 6(b) draws.
+    """
+    z0 = _validate.state("z0", z0)
+    t_end = _validate.positive_scalar("t_end", t_end)
+    mu0 = np.sort(_validate.positive("mu0", mu0).ravel())
+    k = _validate.positive_scalar("k", k)
+    if np.unique(mu0).size < 2:
+        raise ValueError(f"mu0 must hold at least two different values; got {mu0.tolist()}")
+    t = np.linspace(0.0, t_end, LIMIT_FIT_TIMES)
+    error = limit_error(z0, t, mu0, k)
+    order, log_c = np.polyfit(np.log(mu0), np.log(error), 1)
+    return LimitErrorFit(mu0, error, float(order), float(np.exp(log_c)))

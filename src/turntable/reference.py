@@ -19,8 +19,9 @@ quantity is recomputed another way, most of them at high precision:
   and the no-slip rate from the constraint;
 - the rolling-resistance model of `turntable.rolling`: its 4x4 matrix read off the
   constrained three-dimensional Newton-Euler equations in mpmath (`rolling_matrix`), its
-  eigenvalues (`rolling_spectrum`), its solution (`rolling_solution`) and the coefficient
-  of equal decay (`rolling_equal_decay_delta`) at `ROLLING_DPS` digits; `rolling` holds
+  eigenvalues (`rolling_spectrum`), its solution (`rolling_solution`), the coefficients
+  of equal decay (`rolling_equal_decay_delta`) and of equal power on the same path
+  (`rolling_equal_power_delta`, from an eigenvector of L) at `ROLLING_DPS` digits; `rolling` holds
   them under the names of `turntable.rolling` (``rolling.spectrum``, ...).
 
 Every function is deterministic: the same input gives the same output bit for bit.
@@ -630,6 +631,52 @@ def rolling_equal_decay_delta(mu0: float, k: float) -> float:
         return float(mpmath.findroot(lambda d: re_centre(d) - alpha2, bracket, solver="anderson"))
 
 
+def rolling_equal_power_delta(mu0: float, k: float) -> float:
+    """Return delta at which rolling along the slipping path dissipates the slipping power.
+
+    Parameters
+    ----------
+    mu0, k : float
+        Slipping friction coefficient and inertia ratio.
+
+    Returns
+    -------
+    float
+        mu0 |u|^2 / |w_roll|^2 on the slipping model's growing mode, at `ROLLING_DPS`
+        digits (plus those the slip loses to cancellation for large mu0).
+
+    Notes
+    -----
+    The mode is an eigenvector of L (`mp_system_matrix`), as the 3x3 complex matrix of its
+    a I + b J blocks (see `mp_spectrum`), for the eigenvalue of largest real part: a state
+    (r, v, w) whose motion is e^{lambda_+ t} (r, v, w).  From its real components, the
+    slip u = v + gamma x w - gamma x r with cross products, and the spin of a ball that
+    rolls along the same path from the no-slip constraint,
+    w_roll = (x - vy, y + vx).  Both powers scale with e^{2 alpha1 t}, so their ratio at
+    t = 0 is the ratio at every instant.  Nothing of the closed forms is used.
+    """
+    lost = max(0, math.ceil(2.0 * math.log10(max(mu0, 1.0) / k)))
+    with mpmath.workdps(ROLLING_DPS + lost + 10):
+        big = mp_system_matrix(mu0, k)
+        blocks = mpmath.matrix(3, 3)
+        for i in range(3):
+            for j in range(3):
+                blocks[i, j] = mpmath.mpc(big[2 * i, 2 * j], big[2 * i + 1, 2 * j])
+        ev, vecs = mpmath.eig(blocks)
+        j = max(range(3), key=lambda n: mpmath.re(ev[n]))
+        r, v, w = (vecs[n, j] for n in range(3))
+        gamma = [mpmath.mpf(0), mpmath.mpf(0), mpmath.mpf(1)]
+        rr = [mpmath.re(r), mpmath.im(r), mpmath.mpf(0)]
+        vv = [mpmath.re(v), mpmath.im(v), mpmath.mpf(0)]
+        ww = [mpmath.re(w), mpmath.im(w), mpmath.mpf(0)]
+        gw, gr = _mp_cross(gamma, ww), _mp_cross(gamma, rr)
+        u = [vv[n] + gw[n] - gr[n] for n in range(3)]
+        w_roll = [rr[0] - vv[1], rr[1] + vv[0]]
+        slip2 = u[0] ** 2 + u[1] ** 2
+        spin2 = w_roll[0] ** 2 + w_roll[1] ** 2
+        return float(mpmath.mpf(mu0) * slip2 / spin2)
+
+
 @dataclass(frozen=True)
 class RollingReferences:
     """The references of the rolling model under the names of `turntable.rolling`.
@@ -643,6 +690,7 @@ class RollingReferences:
     spectrum: Callable[[float, float], MpRollingSpectrum]
     solution: Callable[[ArrayLike, ArrayLike, float, float], NDArray[np.float64]]
     equal_decay_delta: Callable[[float, float], float]
+    equal_power_delta: Callable[[float, float], float]
 
 
 #: The rolling model's references: `rolling_matrix`, `rolling_spectrum`, ...
@@ -652,4 +700,5 @@ rolling = RollingReferences(
     spectrum=rolling_spectrum,
     solution=rolling_solution,
     equal_decay_delta=rolling_equal_decay_delta,
+    equal_power_delta=rolling_equal_power_delta,
 )

@@ -68,6 +68,11 @@ def notebook(name, **wildcards):
 # "output": {...}, "params": {...}}, filled by the rules files included before figures.smk
 # (film.smk).
 FIGURE_EXTRAS = {}
+# Figures that read the claims parameters (the script resolves them with their defaults):
+# Fig. 6(b) draws the fit of limit.convergence, Fig. 7 marks the factor that "much faster"
+# means (much_faster_factor).
+FIGURE_EXTRAS["fig6_limit"] = {"params": {"claims": config["claims"]}}
+FIGURE_EXTRAS["fig7_rolling_resistance"] = {"params": {"claims": config["claims"]}}
 
 
 def _git_state():

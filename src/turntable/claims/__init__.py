@@ -107,14 +107,28 @@ def evaluate(claim_id: str, params: Mapping[str, Any] | None = None) -> dict[str
     dict
         ``id, source, where (section, equations, figure, label), claim,
         paper_value, method, reproduced, tolerance, summary, evidence,
-        verdict, expected, gist``, with plain Python values and floats rounded
-        to 12 significant digits.
+        verdict, expected, gist, decisive``, with plain Python values and floats
+        rounded to 12 significant digits.
+
+    Raises
+    ------
+    RuntimeError
+        If the check returns a verdict not in `VERDICTS`, no reproduced value under the
+        claim's ``decisive`` key, or, with the expected verdict, no bound on it.
     """
     claim = get(claim_id)
     p = resolve_params(params)
     outcome = claim.check(p)
     if outcome.verdict not in VERDICTS:
         raise RuntimeError(f"check of {claim_id} returned verdict {outcome.verdict!r}")
+    if claim.decisive not in outcome.reproduced or (
+        outcome.verdict == claim.expected and claim.decisive not in outcome.tolerance
+    ):
+        raise RuntimeError(
+            f"check of {claim_id} does not bound its decisive value {claim.decisive!r}: "
+            "it must be a reproduced value and, when the check reaches its expected verdict, "
+            f"a key of the tolerance ({sorted(outcome.tolerance)})"
+        )
     return clean(
         {
             "id": claim.id,
@@ -135,6 +149,7 @@ def evaluate(claim_id: str, params: Mapping[str, Any] | None = None) -> dict[str
             "verdict": outcome.verdict,
             "expected": claim.expected,
             "gist": claim.gist,
+            "decisive": claim.decisive,
         }
     )
 

@@ -23,6 +23,7 @@ from turntable.claims._core import Outcome, Where, all_within, random_states, re
     ),
     paper_value={"text": "remainder O(mu0^-2)", "order": -2.0},
     expected="confirmed",
+    decisive="remainder_order_alpha1",
     gist="the large-friction expansion (3.2) of the paper",
     method=(
         "Compare the expansion with the 40-digit eigenvalues of L at the large mu0 values for "
@@ -117,6 +118,7 @@ def _expansion(p: dict[str, Any]) -> Outcome:
         "inertia alone; the expansion (3.2) gives beta -> k/(k+1), alpha1 -> 0"
     },
     expected="confirmed",
+    decisive="beta_error_order",
     gist="the limit beta -> k/(k+1), alpha1 -> 0",
     method=(
         "Derive the no-slip rate independently from the constrained Newton-Euler equations "
@@ -194,6 +196,7 @@ def _frequency(p: dict[str, Any]) -> Outcome:
         "mu0 -> infinity (no rate stated)"
     },
     expected="refined",
+    decisive="layer_jump_error_order",
     gist=(
         "the convergence to rolling without slipping holds on fixed intervals, for the "
         "velocities only outside an initial layer, and not uniformly in time"
@@ -204,7 +207,7 @@ def _frequency(p: dict[str, Any]) -> Outcome:
         "layer of width 40/|alpha2| against the no-slip motion, fit their order in mu0, and "
         "the position error at t = 1/alpha1. Across the layer the velocities jump: compare "
         "the change of v and w of the slipping ball from t = 0 to the end of the layer with "
-        "the closed-form jump dv = -k u0/(k+1), dw = i u0/(k+1) (complex form, u0 the initial "
+        "the closed-form jump, -k u0/(k+1) in v and i u0/(k+1) in w (complex form, u0 the initial "
         "slip), fitting the order in mu0 of the difference, and the package's no-slip state "
         "with the same closed form."
     ),
@@ -215,7 +218,8 @@ def _convergence(p: dict[str, Any]) -> Outcome:
     pos_order, vel_order, pos_last, vel_last = [], [], 0.0, 0.0
     start_err, long_err = np.inf, np.inf
     start_err_k0 = np.inf
-    pos_err_k0: list[float] = []
+    crossed_min = np.inf
+    jump_order_k0 = 0.0
     jump_order, jump_last, jump_pkg = [], 0.0, 0.0
     slipping = np.asarray(p["state_fig4"])
     for k in p["k_values"]:
@@ -228,7 +232,10 @@ def _convergence(p: dict[str, Any]) -> Outcome:
             t_layer = np.array([40.0 / abs(float(tt.spectrum(mu0, k).alpha2))])
             crossed = tt.solve(slipping, t_layer, mu0, k)[0, 2:] - slipping[2:]
             layer_err.append(float(np.abs(crossed - jump).max()))
+            crossed_min = min(crossed_min, float(np.abs(crossed).max()))
         jump_order.append(ref.log_log_slope(mu0s, layer_err))
+        if k == p["k_paper"]:
+            jump_order_k0 = jump_order[-1]
         jump_last = max(jump_last, layer_err[-1])
         for z0 in (slipping, tt.no_slip_state(slipping, k)):
             pos, vel = [], []
@@ -252,8 +259,8 @@ def _convergence(p: dict[str, Any]) -> Outcome:
             pos_order.append(ref.log_log_slope(mu0s, pos))
             vel_order.append(ref.log_log_slope(mu0s, vel))
             pos_last, vel_last = max(pos_last, pos[-1]), max(vel_last, vel[-1])
-            if k == p["k_paper"] and z0 is slipping:
-                pos_err_k0 = pos
+    # The paper's ball and the state of Fig. 4: the one fit Fig. 6(b) draws.
+    fit_k0 = tt.limit_error_fit(slipping, t_end, mu0s, p["k_paper"])
     initial_slip = float(np.abs(tt.slip_velocity(p["state_fig4"])).max())
     jump_k0 = _velocity_jump(slipping, p["k_paper"])
     reproduced = {
@@ -263,14 +270,20 @@ def _convergence(p: dict[str, Any]) -> Outcome:
         "velocity_order_outside_layer": max(vel_order),
         "max_position_error_at_largest_mu0": pos_last,
         "max_velocity_error_at_largest_mu0": vel_last,
-        "position_errors_k_paper": pos_err_k0,
+        "position_order_k_paper": fit_k0.order,
+        "position_errors_k_paper": fit_k0.error,
         "k": p["k_paper"],
-        "min_velocity_error_at_t0_k_paper": start_err_k0 if np.isfinite(start_err_k0) else -1.0,
-        "min_velocity_error_at_t0": start_err,
+        # identities: at t = 0 the error is the jump, whatever mu0 (not measured)
+        "identity_velocity_error_at_t0_k_paper": (
+            start_err_k0 if np.isfinite(start_err_k0) else -1.0
+        ),
+        "identity_velocity_error_at_t0": start_err,
+        "min_velocity_change_across_layer": crossed_min,
         "initial_slip": initial_slip,
         "velocity_jump_closed_form_k_paper": jump_k0,
         "no_slip_state_vs_closed_form_jump": jump_pkg,
         "layer_jump_error_order": max(jump_order),
+        "layer_jump_error_order_k_paper": jump_order_k0,
         "layer_jump_error_at_largest_mu0": jump_last,
         "min_position_error_at_t_over_alpha1": long_err,
     }
@@ -282,8 +295,11 @@ def _convergence(p: dict[str, Any]) -> Outcome:
         "no_slip_state_vs_closed_form_jump": 1e-14,
         "layer_jump_error_order": -1.0 + 0.05,
     }
+    # What makes it refined, measured on the slipping solution: its velocities change by
+    # O(1) across a layer that shrinks like 1/mu0, for every mu0 (not uniform on [0, T]);
+    # its position error at t = 1/alpha1 stays O(1) (not uniform in time).
     not_uniform_tol = {
-        "min_velocity_error_at_t0": {">=": 0.1},
+        "min_velocity_change_across_layer": {">=": 0.1},
         "min_position_error_at_t_over_alpha1": {">=": 0.1},
     }
     converges = all_within(reproduced, tol)
@@ -297,18 +313,23 @@ def _convergence(p: dict[str, Any]) -> Outcome:
         "confirmed": "The solution approaches the no-slip motion uniformly.",
         "refined": (
             "Holds on each fixed interval, with error O(1/mu0) for the positions uniformly on "
-            f"[0, T] (largest fitted order over the k tried and both starts "
+            f"[0, T] (fitted order {sig(fit_k0.order, 4)} for k = {sig(p['k_paper'])} and the "
+            f"state of Fig. 4, the fit of Fig. 6(b); largest over every k tried and both starts "
             f"{sig(max(pos_order), 3)}); the velocities converge at the same rate only outside "
             "an initial layer of width ~1/mu0 when z(0) slips, and the limit starts from the "
             "no-slip state with the same position and angular momentum. Across the layer the "
-            "velocities jump by dv = -k u0/(k+1), dw = i u0/(k+1) (complex form; u0 the "
+            "velocities jump by -k u0/(k+1) in v and by i u0/(k+1) in w (complex form; u0 the "
             "initial slip), whatever mu0: for the state of Fig. 4 and k = "
-            f"{sig(p['k_paper'])}, (dvx, dvy, dwx, dwy) = "
+            f"{sig(p['k_paper'])}, the jumps of (vx, vy, wx, wy) are "
             f"({', '.join(sig(x, 3) for x in jump_k0)}). At t = 0 the velocity error is this "
-            "jump by construction (both motions start from their own initial state), an "
-            "identity, not a measurement; what is measured is that the slipping ball does "
-            "cross the layer with it, to O(1/mu0) (largest fitted order "
-            f"{sig(max(jump_order), 3)}, error {sig(jump_last, 2)} at mu0 = {sig(mu0s[-1])}). "
+            "jump by construction (both motions start from their own initial state: "
+            f"{sig(start_err, 3)}, the largest component of the jump, the smallest over every "
+            "k), an identity, not a measurement, and no bound rests on it; what is measured is "
+            "that the slipping ball does cross the layer with it, to O(1/mu0) (fitted order "
+            f"{sig(jump_order_k0, 3)} for k = {sig(p['k_paper'])}, largest over every k "
+            f"{sig(max(jump_order), 3)}; error {sig(jump_last, 2)} at mu0 = {sig(mu0s[-1])}), "
+            "its velocities changing across the layer by at least "
+            f"{sig(crossed_min, 3)} for every k and mu0 tried. "
             "The convergence is not uniform in time: at t = 1/alpha1 the position error is "
             f"still at least {sig(long_err, 3)}."
         ),
@@ -318,12 +339,12 @@ def _convergence(p: dict[str, Any]) -> Outcome:
         reproduced=reproduced,
         tolerance=tol,
         summary=(
-            f"on [0, {sig(t_end)}]: position error ~ mu0^{sig(max(pos_order), 3)} (largest "
-            f"order over the k tried); velocities jump across the initial layer by the closed "
-            f"form (largest component {sig(float(np.abs(jump_k0).max()), 3)} for "
-            f"k = {sig(p['k_paper'])}, whatever mu0), crossed to O(mu0^"
-            f"{sig(max(jump_order), 3)}); position error at t = 1/alpha1 at least "
-            f"{sig(long_err, 3)}"
+            f"on [0, {sig(t_end)}], k = {sig(p['k_paper'])} (Fig. 6b): position error ~ "
+            f"mu0^{sig(fit_k0.order, 4)}; velocities jump across the initial layer by the "
+            f"closed form (largest component {sig(float(np.abs(jump_k0).max()), 3)}, whatever "
+            f"mu0), crossed to O(mu0^{sig(jump_order_k0, 3)}). Largest orders over every k "
+            f"tried: mu0^{sig(max(pos_order), 3)} (positions), mu0^{sig(max(jump_order), 3)} "
+            f"(layer). Position error at t = 1/alpha1 at least {sig(long_err, 3)}"
         ),
         evidence=evidence,
     )
@@ -381,6 +402,7 @@ def _slow_projector(big: np.ndarray, mu: float) -> tuple[np.ndarray, np.ndarray,
         "subspace (40-digit alpha1). The time-domain convergence itself is limit.convergence."
     ),
     expected="refined",
+    decisive="slow_growth_rate",
     gist=(
         "infinite friction realises the constraint as a singular limit that selects the "
         "nonholonomic motion from the rolling state with the same position and angular "

@@ -256,6 +256,10 @@ class Claim:
         What the check establishes, in a few words, when it reaches the ``expected``
         verdict (the article lists claims by verdict with this line; with another
         verdict it shows the ``summary`` instead).
+    decisive : str
+        The key of the one reproduced value, with its bound in the ``tolerance``, that
+        decides the ``expected`` verdict (``turntable claims`` prints it, one line per
+        claim).
     """
 
     id: str
@@ -267,6 +271,7 @@ class Claim:
     expected: Verdict = "confirmed"
     source: str = "paper"
     gist: str = ""
+    decisive: str = ""
 
     def label(self) -> str:
         """Return the location; an addition of the reproduction is marked as such."""
@@ -286,6 +291,7 @@ def register(
     paper_value: dict[str, Any],
     method: str,
     expected: Verdict,
+    decisive: str,
     gist: str = "",
     source: str = "paper",
 ) -> Callable[[Callable[[dict[str, Any]], Outcome]], Callable[[dict[str, Any]], Outcome]]:
@@ -293,8 +299,10 @@ def register(
 
     The order of registration is the order of the report (the paper's order): the
     check modules are imported in the paper's order and register their claims in it.
-    ``expected`` is the verdict the tests require of the check; ``gist`` what it
-    establishes then, in a few words (see `Claim`). Everything the report, the tests and
+    ``expected`` is the verdict the tests require of the check; ``decisive`` the key of the
+    reproduced value whose bound decides that verdict (`turntable.claims.evaluate` refuses
+    a check whose tolerance does not bound it); ``gist`` what it establishes then, in a few
+    words (see `Claim`). Everything the report, the tests and
     the article say of a claim comes from here: adding a claim is one call.
     """
     if expected not in VERDICTS:
@@ -305,11 +313,17 @@ def register(
         raise ValueError(f"paper_value of {id!r} must state what the paper says, as 'text'")
     if not gist.strip():
         raise ValueError(f"gist of {id!r} must say in a few words what the check establishes")
+    if not isinstance(decisive, str) or not decisive.strip():
+        raise ValueError(
+            f"decisive of {id!r} must name the reproduced value whose bound decides the verdict"
+        )
 
     def wrap(fn: Callable[[dict[str, Any]], Outcome]) -> Callable[[dict[str, Any]], Outcome]:
         if id in _REGISTRY:
             raise ValueError(f"claim id {id!r} registered twice")
-        _REGISTRY[id] = Claim(id, where, claim, paper_value, method, fn, expected, source, gist)
+        _REGISTRY[id] = Claim(
+            id, where, claim, paper_value, method, fn, expected, source, gist, decisive
+        )
         return fn
 
     return wrap

@@ -30,8 +30,8 @@ VERDICT_MEANINGS: dict[str, str] = {
     "failed": "the numbers contradict it",
 }
 
-#: Version of the layout of ``claims.json``.
-SCHEMA_VERSION = 1
+#: Version of the layout of ``claims.json`` (2: each claim names its ``decisive`` value).
+SCHEMA_VERSION = 2
 
 
 def git_commit(cwd: str | Path | None = None) -> str:
@@ -161,6 +161,43 @@ def values_and_bounds(claim: Mapping[str, Any]) -> str:
     )
 
 
+def decisive_value(claim: Mapping[str, Any]) -> str:
+    """Return ``key = value (bound)`` for the reproduced value that decides the verdict.
+
+    A check that did not reach its expected verdict may leave that value unbounded:
+    ``(no bound: expected <verdict>)`` then.
+    """
+    key = claim["decisive"]
+    bound = claim["tolerance"].get(key)
+    text = f"no bound: expected {claim['expected']}" if bound is None else _bound_text(bound)
+    return f"{key} = {claim['reproduced'][key]} ({text})"
+
+
+def decisive_lines(report: Mapping[str, Any]) -> list[str]:
+    """Return one line per claim, in the report's order: id, verdict, deciding value.
+
+    Parameters
+    ----------
+    report : mapping
+        A claims report (`build_report`, or ``results/claims.json`` read back).
+
+    Returns
+    -------
+    list of str
+        ``<id>  <verdict>  <key> = <value> (<relation> <bound>)``, the columns aligned;
+        the key is the claim's ``decisive`` (`turntable.claims.register`) and value and
+        bound are those of ``reproduced`` and ``tolerance``, as the JSON holds them.
+    """
+    order = list(report["order"])
+    width = max((len(cid) for cid in order), default=0)
+    verdict_width = max(len(v) for v in VERDICTS)
+    return [
+        f"{cid:<{width}}  {report['claims'][cid]['verdict']:<{verdict_width}}  "
+        + decisive_value(report["claims"][cid])
+        for cid in order
+    ]
+
+
 def to_markdown(report: Mapping[str, Any]) -> str:
     """Render a report as a Markdown document with one table row per claim."""
     lines = [
@@ -197,7 +234,10 @@ def to_markdown(report: Mapping[str, Any]) -> str:
     lines += ["", "## Evidence", ""]
     for cid in report["order"]:
         c = report["claims"][cid]
-        lines.append(f"- `{cid}` ({c['verdict']}): {_cell(c['evidence'])}")
+        lines.append(
+            f"- `{cid}` ({c['verdict']}; decided by {_cell(decisive_value(c))}): "
+            f"{_cell(c['evidence'])}"
+        )
     lines += ["", "## Reproduced values and their bounds", ""]
     for cid in report["order"]:
         c = report["claims"][cid]
@@ -214,21 +254,27 @@ _GREEK = {
     "mu": "μ", "nu": "ν", "pi": "π", "rho": "ρ", "sigma": "σ", "phi": "φ", "omega": "ω",
     "Omega": "Ω", "infinity": "∞",
 }  # fmt: skip
-_SYMBOLS = {"<=": "≤", ">=": "≥", "->": "→", "+-": "±", "-+": "∓", "!=": "≠", "~": "∼"}
+#: "~=" is "approximately" (≈), "~" "of the order of" or "behaves like" (∼).
+_SYMBOLS = {
+    "<=": "≤", ">=": "≥", "->": "→", "+-": "±", "-+": "∓", "!=": "≠", "~=": "≈", "~": "∼",
+}  # fmt: skip
 #: One token of the registry's plain-text mathematics (the same forms as the article's
-#: ascii-math rule in paper/values.typ): exp(2 pi), 6.9e-25, ^-2 and ^(3/2), x0 and mu0*,
-#: alpha1, sigma_g and lambda_{1,2}, vx and wy, z+ and z-, sqrt, the symbols, and a minus
-#: between spaces.
+#: ascii-math rule in paper/values.typ): exp(2 pi), 6.9e-25, ^-2 and ^(3/2), x0, u0 and mu0*,
+#: alpha1, sigma_g, lambda_{1,2} and lambda_+, vx and wy, the angular velocity w (with an index or a
+#: subscript: w1, w_h), the cross product "gamma x", z+ and z-, sqrt, the symbols, and a
+#: minus between spaces.
 _MATH_TOKEN = re.compile(
     r"exp\(2 pi\)"
+    r"|\bgamma x\b"
     r"|\b\d(?:\.\d+)?e[-+]?\d+\b"
     r"|\^(?:\([^()]*\)|[-+]?\d+(?:\.\d+)?)"
     r"|(?<![\w.])(?:" + "|".join(sorted(_GREEK, key=len, reverse=True)) + r")\d*"
-    r"(?:_(?:c|g|h|dim)\b|_\{[^}]*\})?\*?(?![\w.])"
-    r"|(?<![\w.])[xyzr]0\*?(?![\w.])"
+    r"(?:_(?:c|g|h|dim)\b|_\{[^}]*\}|_[+-])?\*?(?![\w.])"
+    r"|(?<![\w.])[xyzru]0\*?(?![\w.])"
     r"|(?<![\w.])[vw][xyz](?![\w.])"
+    r"|(?<![\w.])w(?:\d+|_(?:c|g|h)\b|_\{[^}]*\})?(?!\w|\.\w)"
     r"|(?<![\w.])z[+-](?=[\s,.;:)|]|$)"
-    r"|\bsqrt\(|<=|>=|->|\+-|-\+|!=|~| - "
+    r"|\bsqrt\(|<=|>=|->|\+-|-\+|!=|~=|~| - "
 )
 
 
@@ -242,6 +288,8 @@ def _math_html(token: str) -> str:
 
     if token == "exp(2 pi)":
         return "e<sup>2π</sup>"
+    if token == "gamma x":
+        return "γ ×"
     if token == " - ":
         return " \u2212 "
     if token == "sqrt(":
@@ -260,14 +308,14 @@ def _math_html(token: str) -> str:
         return f"z<sub>{_minus(token[1])}</sub>"
     if re.fullmatch(r"[vw][xyz]", token):
         return f"{'ω' if token[0] == 'w' else 'v'}<sub>{token[1]}</sub>"
-    m = re.fullmatch(r"([A-Za-z]+)(\d*)(?:_(c|g|h|dim|\{[^}]*\}))?(\*?)", token)
+    m = re.fullmatch(r"([A-Za-z]+)(\d*)(?:_(c|g|h|dim|\{[^}]*\}|[+-]))?(\*?)", token)
     assert m is not None, token
     name, digits, sub, star = m.groups()
-    out = _GREEK.get(name, name)
+    out = "ω" if name == "w" else _GREEK.get(name, name)
     if digits:
         out += f"<sub>{digits}</sub>"
     if sub:
-        sub = sub.strip("{}")
+        sub = _minus(sub.strip("{}"))
         out += f"<sup>{sub}</sup>" if sub == "dim" else f"<sub>{sub}</sub>"
     return out + ("<sup>*</sup>" if star else "")
 
@@ -276,15 +324,16 @@ def html_math(text: str) -> str:
     """Escape ``text`` for HTML and typeset its plain-text mathematics.
 
     The registry writes mathematics in plain text (``mu0^-2``, ``exp(2 pi)``,
-    ``|alpha2|/beta``, ``x0``, ``<=``); here Greek names become letters, indices
+    ``|alpha2|/beta``, ``x0``, ``<=``, ``~=``); here Greek names (and the angular
+    velocity w) become letters, indices
     subscripts, powers superscripts and ``1e-06`` becomes 10<sup>−6</sup>. Words that
     are not mathematics, and identifiers such as ``spectrum.alpha1_peak``, are left as
     they are.
 
     Examples
     --------
-    >>> html_math("N > exp(2 pi) ~ 535 for mu0 -> 0")
-    'N &gt; e<sup>2π</sup> ∼ 535 for μ<sub>0</sub> → 0'
+    >>> html_math("N > exp(2 pi) ~= 535.5 for mu0 -> 0")
+    'N &gt; e<sup>2π</sup> ≈ 535.5 for μ<sub>0</sub> → 0'
     """
     from html import escape
 

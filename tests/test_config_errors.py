@@ -752,10 +752,10 @@ def test_a_reference_value_changed_in_one_place_is_told_with_the_ways_forward(
     assert "`default:` of its key in workflow/schemas/config.schema.yaml" in problem
     # a count written as a float differs too, and a missing key is named
     text = replaced("  n_points: 400\n\nfig3", "  n_points: 400.0\n\nfig3")
-    path.write_text(replaced("  n_error: 13\n", "", text))
+    path.write_text(replaced("  mu0_layer: [10.0, 100.0, 1000.0]\n", "", text))
     problem = reference_differences(path)
     assert "fig2_spectrum.n_points = 400.0; the schema's default: 400" in problem
-    assert 'fig6_limit.n_error = "(missing)"' in problem
+    assert 'fig6_limit.mu0_layer = "(missing)"' in problem
 
 
 def _keys(at: tuple[str | int, ...]) -> list[tuple[str | int, ...]]:

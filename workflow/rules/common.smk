@@ -93,3 +93,28 @@ def _git_state():
 # (Snakemake reruns a job whose params changed), so the commit printed is the one that
 # built the output.
 GIT_STATE = _git_state()
+
+
+def _config_overrides():
+    """Every value of this run's configuration that differs from config/config.yaml, the
+    project's reference values (what --configfile or --config changed), as
+    "section.key = value" lines in JSON notation; empty for the reference configuration.
+    """
+    import json
+
+    import yaml
+
+    with open(ROOT / "config" / "config.yaml", encoding="utf-8") as f:
+        reference = yaml.safe_load(f)
+    changed = []
+    for section, values in config.items():
+        ref = reference.get(section) or {}
+        for key, value in values.items() if isinstance(values, dict) else []:
+            if key not in ref or json.dumps(value) != json.dumps(ref[key]):
+                changed.append(f"{section}.{key} = {json.dumps(value)}")
+    return sorted(changed)
+
+
+# The values of this run that differ from the reference configuration, as a param of the
+# article's job: the PDF says with which values it was built (a change reruns it).
+CONFIG_OVERRIDES = _config_overrides()

@@ -32,5 +32,6 @@ rule paper:
         # not read by the script (it records its own provenance): reruns the job when the
         # commit or the dirty state changes
         git_state=GIT_STATE,
+        config_overrides=CONFIG_OVERRIDES,
     script:
         NOTEBOOK_JOB

@@ -15,6 +15,7 @@ from pathlib import Path
 from typing import Any
 
 import turntable
+from turntable import reference
 from turntable.claims import VERDICTS, evaluate_all, resolve_params
 from turntable.claims._core import clean, split_bound
 from turntable.provenance import git_state
@@ -90,8 +91,9 @@ def build_report(
     Returns
     -------
     dict
-        ``schema, package, version, git_commit, provenance, params, order, summary
-        (count per verdict), claims`` (records keyed by id).
+        ``schema, package, version, git_commit, provenance, params, reference_digits
+        (the working precision of the high-precision references, `turntable.reference`),
+        order, summary (count per verdict), claims`` (records keyed by id).
     """
     p = resolve_params(params)
     records = evaluate_all(p)
@@ -104,6 +106,11 @@ def build_report(
             "git_commit": commit,
             "provenance": dict(provenance) if provenance is not None else None,
             "params": p,
+            "reference_digits": {
+                "eigenvalues": reference.DPS,
+                "characteristic_roots": reference.ROOTS_DPS,
+                "rolling": reference.ROLLING_DPS,
+            },
             "order": [r["id"] for r in records],
             "summary": counts,
             "claims": {r["id"]: r for r in records},

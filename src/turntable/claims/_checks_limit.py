@@ -196,10 +196,11 @@ def _frequency(p: dict[str, Any]) -> Outcome:
         "mu0 -> infinity (no rate stated)"
     },
     expected="refined",
-    decisive="layer_jump_error_order",
+    decisive="min_velocity_change_across_layer",
     gist=(
         "the convergence to rolling without slipping holds on fixed intervals, for the "
-        "velocities only outside an initial layer, and not uniformly in time"
+        "positions uniformly, for the velocities only outside an initial layer across which "
+        "they jump by a finite amount"
     ),
     method=(
         "For the slipping state of Fig. 4, its no-slip counterpart and every k, measure on "
@@ -314,7 +315,8 @@ def _convergence(p: dict[str, Any]) -> Outcome:
         "refined": (
             "Holds on each fixed interval, with error O(1/mu0) for the positions uniformly on "
             f"[0, T] (fitted order {sig(fit_k0.order, 4)} for k = {sig(p['k_paper'])} and the "
-            f"state of Fig. 4, the fit of Fig. 6(b); largest over every k tried and both starts "
+            f"state of Fig. 4, the fit drawn in the reproduction's Figure 6(b); largest over "
+            "every k tried and both starts "
             f"{sig(max(pos_order), 3)}); the velocities converge at the same rate only outside "
             "an initial layer of width ~1/mu0 when z(0) slips, and the limit starts from the "
             "no-slip state with the same position and angular momentum. Across the layer the "
@@ -339,7 +341,8 @@ def _convergence(p: dict[str, Any]) -> Outcome:
         reproduced=reproduced,
         tolerance=tol,
         summary=(
-            f"on [0, {sig(t_end)}], k = {sig(p['k_paper'])} (Fig. 6b): position error ~ "
+            f"on [0, {sig(t_end)}], k = {sig(p['k_paper'])} (the reproduction's Figure 6(b)): "
+            "position error ~ "
             f"mu0^{sig(fit_k0.order, 4)}; velocities jump across the initial layer by the "
             f"closed form (largest component {sig(float(np.abs(jump_k0).max()), 3)}, whatever "
             f"mu0), crossed to O(mu0^{sig(jump_order_k0, 3)}). Largest orders over every k "

@@ -167,7 +167,10 @@ def _decomposition(p: dict[str, Any]) -> Outcome:
     },
     expected="corrected",
     decisive="min_minus_sign_error",
-    gist="the spiral centre, the paper's (2.8), needs a plus sign in front of vx(0) in y0",
+    gist=(
+        "the spiral centre needs a plus sign in front of vx(0) in y0, where the paper's (2.8), "
+        "as its text reads, has a minus sign"
+    ),
     method=(
         "Project z0 on ker L along the range of L (least squares, no formula) for every k, "
         "several mu0 and generic states with vx(0) != 0; compare with the package, with the "
@@ -223,7 +226,8 @@ def _centre(p: dict[str, Any]) -> Outcome:
     elif ok and distinguishable:
         verdict = "corrected"
         evidence = (
-            "Erratum: the printed (2.8) has the wrong sign before vx(0); the right formula is "
+            "Erratum: the printed (2.8), as its text reads (a text extraction of the formula), "
+            "has a minus sign before vx(0); the right formula is "
             "y0 = (k wy(0) + vx(0))/k. The projection of z0 on the kernel and "
             "the conserved angular momentum k wy + vx agree with the plus sign for every state "
             "and k tried; the printed minus sign misses by at least "

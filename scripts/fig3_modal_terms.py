@@ -29,7 +29,7 @@ for ax, mu0 in zip(axes[0], p.mu0, strict=True):
     ax.axhline(0.0, color="k", lw=0.4)
     ax.set(xlabel=r"time $t\Omega$", title=rf"$\mu_0 = {mu0:g}$, $k = {p.k:g}$", xlim=p.t_span)
     periods = (p.t_span[1] - p.t_span[0]) * float(turntable.spectrum(mu0, p.k).beta) / (2 * np.pi)
-    ax.text(0.97, 0.04, f"span: {periods:.2g} periods $2\\pi/\\beta$", transform=ax.transAxes,
+    ax.text(0.95, 0.04, f"span: {periods:.2g} periods $2\\pi/\\beta$", transform=ax.transAxes,
             ha="right", fontsize=7)  # fmt: skip
 axes[0, 0].set_ylabel(r"displacement (units of $R$)")
 axes[0, 0].legend(loc="best")

@@ -102,7 +102,9 @@ ax_d.text(
     ha="right",
     fontsize=7,
 )
-ax_se.legend(fontsize=7, loc="lower left")
+# headroom above the curves for the legend
+ax_se.set_ylim(top=ax_se.get_ylim()[1] * 1e2)
+ax_se.legend(fontsize=7, loc="upper left")
 lines = ax_d.get_legend_handles_labels()
 twin = ax_p.get_legend_handles_labels()
 ax_d.legend(lines[0] + twin[0], lines[1] + twin[1], fontsize=7, loc="lower left")

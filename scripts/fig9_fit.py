@@ -39,7 +39,10 @@ for row, name, data, res in zip(axes, names, films, results, strict=True):
     truth = p.films[name]
     fitplot.draw_paths(row[0], data, res)
     fitplot.draw_residuals(row[1], data, res, coefficients=True)
-    row[1].legend(fontsize=6.5, loc="lower right")
+    # a decade and a half of headroom above the residuals for the legend
+    low, high = row[1].get_ylim()
+    row[1].set_ylim(low, high * 10**1.5)
+    row[1].legend(fontsize=6.5, loc="upper right")
     symbol = {"mu0": r"$\mu_0$", "delta": r"$\delta$"}[fitplot.COEFFICIENT[truth["model"]]]
     selected = res["selected"]
     row[0].set_title(

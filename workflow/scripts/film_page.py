@@ -87,19 +87,21 @@ measurable = (
 )
 
 # %% the synthetic films
+SYMBOL = {"mu0": "&mu;<sub>0</sub>", "delta": "&delta;"}
 film_rows = []
 for name, spec in truth["films"].items():
     res = fits[name]
     model = spec["model"]
     coefficient = COEFFICIENT[model]
     entry = res[model]
+    symbol, fitted = SYMBOL[coefficient], coefficient_text(entry, coefficient)
     if not res["data"]["synthetic"]:
         raise ValueError(f"{name}: the fit of a synthetic film is not marked synthetic")
     film_rows.append(
         "<tr>"
         f"<td><b>{esc(name)}</b> (SYNTHETIC)</td>"
-        f"<td>{esc(model.replace('_', ' '))}, {coefficient} = {g(spec['coefficient'])}</td>"
-        f"<td>{esc(coefficient_text(entry, coefficient))}</td>"
+        f"<td>{esc(model.replace('_', ' '))}, {symbol} = {g(spec['coefficient'])}</td>"
+        f"<td>{symbol}{' ' if fitted[0] in '<>' else ' = '}{esc(fitted)}</td>"
         f"<td>{interval(entry, coefficient)}</td>"
         f"<td>{g(1e3 * entry['rms_residual_m'])} mm</td>"
         f"<td>{g(entry['residual_lag1_autocorrelation'], 2)} "

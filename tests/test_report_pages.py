@@ -201,3 +201,25 @@ def test_a_broken_caption_is_noticed() -> None:
     bad = "decays at the slipping |alpha2| for mu0 -> 0."
     assert "Undefined substitution" in _docutils_messages(bad)
     assert ASCII_MATH.findall(bad)
+
+
+def test_claims_page_gives_the_evidence_of_each_verdict() -> None:
+    """Below the table, as in claims.md: each claim's evidence with the value that decides
+    its verdict, so that the page says why a verdict is refined, corrected or undecidable."""
+    report = _fake_report()
+    for cid, claim in report["claims"].items():
+        claim |= {
+            "evidence": f"why {cid} is {claim['verdict']}",
+            "decisive": "err",
+            "reproduced": {"err": 0.5},
+            "tolerance": {"err": {"<=": 1.0}},
+            "expected": claim["verdict"],
+        }
+    page = to_html(report)
+    evidence = page.split("<h2>Evidence</h2>", 1)[1]
+    items = re.findall(r"<li>(.*?)</li>", evidence)
+    assert len(items) == 3
+    for item, cid in zip(items, report["order"], strict=True):
+        verdict = report["claims"][cid]["verdict"]
+        assert item.startswith(f"<code>{cid}</code> ({verdict}; decided by <code>err = 0.5 ")
+        assert f"why {cid} is {verdict}" in item

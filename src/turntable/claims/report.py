@@ -367,7 +367,8 @@ _VERDICT_COLOURS = {
 
 
 def to_html(report: Mapping[str, Any]) -> str:
-    """Render a report as a self-contained HTML page: the counts, then the table of claims.
+    """Render a report as a self-contained HTML page: the counts, the table of claims, then
+    the evidence of each verdict with the value that decides it.
 
     The columns are those of :func:`to_markdown`; the verdict is coloured. Shown in the
     HTML report of the workflow (rule ``claims_table``).
@@ -392,6 +393,18 @@ def to_html(report: Mapping[str, Any]) -> str:
         f"<th>{h}</th>"
         for h in ("id", "where in the paper", "claim", "paper's value", "reproduced", "verdict")
     )
+    # why each verdict is what it is, and the value that decides it (as in claims.md)
+    evidence = [
+        f"<li><code>{escape(cid)}</code> ({escape(c['verdict'])}"
+        + (
+            f"; decided by <code>{escape(decisive_value(c))}</code>"
+            if c.get("decisive") is not None
+            else ""
+        )
+        + f"): {html_math(str(c['evidence']))}</li>"
+        for cid in report["order"]
+        if "evidence" in (c := report["claims"][cid])
+    ]
     return (
         '<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">'
         "<title>Claims of Ivanova (2019) and their reproduction</title><style>"
@@ -407,7 +420,9 @@ def to_html(report: Mapping[str, Any]) -> str:
         "it builds on.</p>\n"
         f"<table>\n<thead><tr>{head}</tr></thead>\n<tbody>\n"
         + "\n".join(rows)
-        + "\n</tbody>\n</table>\n</body></html>\n"
+        + "\n</tbody>\n</table>\n"
+        + ("<h2>Evidence</h2>\n<ul>\n" + "\n".join(evidence) + "\n</ul>\n" if evidence else "")
+        + "</body></html>\n"
     )
 
 

@@ -540,7 +540,7 @@ def test_report_page_of_the_films(clean_build: Path) -> None:  # noqa: F811
     out = json.loads((clean_build / "results/film/slipping.json").read_text())
     text = fitplot.coefficient_text(out["slipping"], "mu0")
     assert "±" in text
-    assert "<b>slipping</b> (SYNTHETIC)</td><td>slipping, mu0 = " in page
+    assert "<b>slipping</b> (SYNTHETIC)</td><td>slipping, &mu;<sub>0</sub> = " in page
     assert text in page
     measure = json.loads((clean_build / "results/film/measurability.json").read_text())
     assert f"below {measure['indistinguishable_above_mu0']:.3g}" in page

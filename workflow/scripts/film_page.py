@@ -1,7 +1,7 @@
 """The page "What a film can tell" of the HTML report (results/film.html).
 
 Run by rule ``film_page`` (workflow/rules/film.smk). What the camera of configuration section
-``film`` can measure (results/film/measurability.json, written with Fig. 8) and what
+``film`` can measure (results/film/measurability.json, written with Figure 8) and what
 ``turntable fit`` recovered from the SYNTHETIC films (results/film/<name>.json, their truth in
 results/film/synthetic.json), with Figures 8 and 9 and their captions (each drawn by
 workflow/scripts/report_figure.py). Every number is read from those files; the PNGs are
@@ -62,7 +62,7 @@ else:
     )
     reach = (
         f"Fits reach this bound where it is below {g(measure['reliable_relative_error'])}, "
-        f"{where}; beyond, the fitted values scatter more than it predicts (dotted in Fig. 8)."
+        f"{where}; beyond, the fitted values scatter more than it predicts (dotted in Figure 8)."
     )
 told = (
     f"The slipping ball can be told from one rolling without slipping (AICc selects the "

@@ -34,6 +34,7 @@ from ci_build import (
     write_config,
 )
 from test_pipeline import clean_build, in_project, shared_tmp  # noqa: F401
+from test_provenance import _git as git
 
 DRAWING = {*FIGURE_NAMES, "study", "animation"}  # the jobs that use scripts/_style
 # the one figure whose script does not import turntable
@@ -301,14 +302,6 @@ def test_values_of_ones_own_over_the_configuration_rerun_the_jobs_that_read_them
 
 
 # --------------------------------------------------------------------------- the commit
-def git(tree: Path, *args: str) -> str:
-    return subprocess.run(
-        ["git", "-c", "user.name=t", "-c", "user.email=t@example.org", *args],
-        cwd=tree,
-        check=True,
-        capture_output=True,
-        text=True,
-    ).stdout.strip()
 
 
 def attached_build_record(pdf: Path) -> dict:

@@ -1,11 +1,10 @@
-# The claims registry (turntable.claims): every claim of the paper checked against independent
-# references, with a verdict. The package is an input, so that editing the physics or a check
-# reruns the rule.
+# The claims registry (turntable.claims): every claim of the paper checked against
+# independent references, with a verdict; and its table as a page of the HTML report.
 
 
 rule claims:
     input:
-        **notebook_inputs("scripts/claims_report.py"),
+        **script_inputs("claims_report"),
     output:
         json=ensure("results/claims.json", non_empty=True),
         md=ensure("results/claims.md", non_empty=True),
@@ -14,9 +13,26 @@ rule claims:
         "logs/claims.log",
     benchmark:
         "logs/benchmarks/claims.tsv"
-    conda:
-        "../envs/turntable.yaml"
     params:
         claims=config["claims"],
     script:
-        NOTEBOOK_JOB
+        "../scripts/as_notebook.py"
+
+
+rule claims_table:
+    input:
+        "results/claims.json",
+        code=PACKAGE,
+    output:
+        ensure(
+            report(
+                "results/claims.html",
+                caption="../report/claims.rst",
+                category="Claims",
+            ),
+            non_empty=True,
+        ),
+    log:
+        "logs/claims_table.log",
+    script:
+        "../scripts/claims_table.py"

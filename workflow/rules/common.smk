@@ -1,120 +1,68 @@
-# Paths shared by the rules: the code every job depends on. (The configuration is checked by
-# workflow/config_checks.py.)
-import os
+# The configuration, checked, and what the rules share: the figures, the package's files,
+# the inputs of a job that runs a script of scripts/ as a notebook.
+import json
 from pathlib import Path
 
-# The project's files a script imports (workflow/code_inputs.py, read from the script's
-# import statements): the input `code` of its job, so that editing a file reruns exactly the
-# jobs whose script imports it. The package src/turntable/ counts as a whole (every file of
-# it, found by glob: a new module counts too; hidden files and editor backups do not).
-from code_inputs import code_inputs, package_sources
+import turntable
+import turntable.config
+import yaml
+from snakemake.exceptions import WorkflowError
+from turntable.provenance import git_state
 
-# The root of the repository (the main Snakefile is workflow/Snakefile).
 ROOT = Path(workflow.basedir).parent
+if not Path(turntable.__file__).resolve().is_relative_to(ROOT / "src"):
+    raise WorkflowError(
+        f"Python imports turntable from {Path(turntable.__file__).parent}, not from "
+        f"{ROOT / 'src'}: a copied or moved tree needs its own .venv (rm -rf .venv && make)."
+    )
 
 
-def source(path):
-    """A file of the repository (`path` relative to it), as a path relative to the working
-    directory: the same string wherever the work tree is moved or copied, so that Snakemake's
-    record of a job's inputs still matches. Also right with --directory elsewhere.
-    """
-    return os.path.relpath(ROOT / path)
+def _sorted(value):
+    """`value` with the keys of every mapping sorted: params compare as data."""
+    if isinstance(value, dict):
+        return {key: _sorted(value[key]) for key in sorted(value)}
+    return [_sorted(v) for v in value] if isinstance(value, list) else value
 
 
-def code(script):
-    """The files of the project that `script` (relative to the repository) imports, as paths
-    from source(): the package's when it imports turntable, scripts/_style/ when it draws
-    (scripts/_style/animation.py only for the animation), a helper of workflow/scripts/.
-    """
-    return [source(p) for p in code_inputs(script)]
+# Refuse a mistake before any job runs: one line per problem, the key and what is expected.
+SCHEMA = Path(workflow.basedir, "schemas", "config.schema.yaml")
+_problems = turntable.config.validate(config, SCHEMA) or turntable.config.problems(
+    config
+)
+if _problems:
+    raise WorkflowError(
+        "Invalid configuration; nothing was run and no output was changed:\n"
+        + "\n".join(_problems[:20])
+    )
+config.update(_sorted(config))
+DEFAULTS = {}
+turntable.config.validate(DEFAULTS, SCHEMA)
+
+# The values of this run that differ from the defaults (section.key = value), and the
+# commit and state of the tree: params of the article, which names them.
+OVERRIDES = [
+    f"{section}.{key} = {json.dumps(value)}"
+    for section, values in config.items()
+    for key, value in values.items()
+    if value != DEFAULTS[section][key]
+]
+_commit, _dirty = git_state(ROOT)
+GIT_STATE = f"{_commit} (dirty)" if _dirty else _commit
+
+FIGURES = yaml.safe_load(Path(workflow.basedir, "figures.yaml").read_text())
+PACKAGE = sorted(
+    str(p.relative_to(ROOT))
+    for p in (ROOT / "src" / "turntable").rglob("*")
+    if p.suffix in {".py", ".yaml"} and not p.name.startswith(".")
+)
+STYLE = ["scripts/_style/__init__.py", "scripts/_style/turntable.mplstyle"]
 
 
-# The package: an input of a job that runs it other than through a script (`turntable fit`).
-PACKAGE = [source(p) for p in package_sources()]
-
-# Each script of scripts/ runs once per job, as a Jupyter notebook, through the driver
-# workflow/scripts/run_notebook.py; the job writes the notebook with its outputs beside its
-# other outputs. The rule's `script:` is the stub NOTEBOOK_JOB, which runs the driver: the
-# driver is an input, compared by content, so that touching it reruns nothing (Snakemake
-# compares a `script:` by modification time alone). A rule takes its inputs `script`,
-# `driver` and `code` from notebook_inputs() and its output `notebook` from notebook().
-NOTEBOOK_JOB = "../scripts/notebook_job.py"
-DRIVER = source("workflow/scripts/run_notebook.py")
+def script_inputs(name, style=()):
+    """Inputs of the job that runs scripts/<name>.py: the script and the code it runs."""
+    return {"script": f"scripts/{name}.py", "code": [*PACKAGE, *style]}
 
 
-def notebook_inputs(script):
-    """Inputs of the job that runs `script` (scripts/<name>.py) as a notebook: the script,
-    the driver, and the code the script imports."""
-    return {"script": source(script), "driver": DRIVER, "code": code(script)}
-
-
-NOTEBOOKS = []
-
-
-def notebook(name, **wildcards):
-    """Output `notebook` of a job of scripts/<name>.py: results/notebooks/<name>.ipynb.
-
-    `name` may hold wildcards; give their values (lists) as keywords, so that target
-    `notebooks` lists every notebook.
-    """
-    path = f"results/notebooks/{name}.ipynb"
-    NOTEBOOKS.extend(expand(path, **wildcards))
-    return ensure(path, non_empty=True)
-
-
-# What a figure of workflow/figures.yaml needs beyond the rule that figures.smk generates for
-# it (notebook_inputs() as inputs; the PDF, the PNG and the notebook as outputs; its section
-# of the configuration and the resolution as params), by figure name: {"input": {...},
-# "output": {...}, "params": {...}}, filled by the rules files included before figures.smk
-# (film.smk).
-FIGURE_EXTRAS = {}
-# Figures that read the claims parameters (the script resolves them with their defaults):
-# Fig. 6(b) draws the fit of limit.convergence, Fig. 7 marks the factor that "much faster"
-# means (much_faster_factor).
-FIGURE_EXTRAS["fig6_limit"] = {"params": {"claims": config["claims"]}}
-FIGURE_EXTRAS["fig7_rolling_resistance"] = {"params": {"claims": config["claims"]}}
-
-
-def _git_state():
-    """(commit, dirty) of the checkout, by turntable.provenance.git_state, loaded from its
-    file alone: importing the package would import numpy and scipy in every Snakemake run.
-    """
-    from importlib.util import module_from_spec, spec_from_file_location
-
-    spec = spec_from_file_location("_provenance", ROOT / "src/turntable/provenance.py")
-    provenance = module_from_spec(spec)
-    spec.loader.exec_module(provenance)
-    commit, dirty = provenance.git_state(ROOT)
-    return f"{commit}{' (dirty)' if dirty else ''}"
-
-
-# The commit of the checkout and whether its tree is dirty, as a param of the jobs that print
-# them (the article): a new commit, or a tree that becomes dirty or clean, reruns them
-# (Snakemake reruns a job whose params changed), so the commit printed is the one that
-# built the output.
-GIT_STATE = _git_state()
-
-
-def _config_overrides():
-    """Every value of this run's configuration that differs from config/config.yaml, the
-    project's reference values (what --configfile or --config changed), as
-    "section.key = value" lines in JSON notation; empty for the reference configuration.
-    """
-    import json
-
-    import yaml
-
-    with open(ROOT / "config" / "config.yaml", encoding="utf-8") as f:
-        reference = yaml.safe_load(f)
-    changed = []
-    for section, values in config.items():
-        ref = reference.get(section) or {}
-        for key, value in values.items() if isinstance(values, dict) else []:
-            if key not in ref or json.dumps(value) != json.dumps(ref[key]):
-                changed.append(f"{section}.{key} = {json.dumps(value)}")
-    return sorted(changed)
-
-
-# The values of this run that differ from the reference configuration, as a param of the
-# article's job: the PDF says with which values it was built (a change reruns it).
-CONFIG_OVERRIDES = _config_overrides()
+def notebook(name):
+    """The notebook the job of scripts/<name>.py writes, with the outputs of its run."""
+    return ensure(f"results/notebooks/{name}.ipynb", non_empty=True)

@@ -1,23 +1,30 @@
-# One rule per figure, generated from the list in workflow/figures.yaml. Each rule runs
-# scripts/<name>.py once, as a notebook, with the section <name> of config/config.yaml as its
-# parameters (with the resolution of the style, and what FIGURE_EXTRAS of common.smk adds),
-# so that editing a value reruns only the figures that read it.
-import yaml
+# One rule per figure of workflow/figures.yaml: scripts/<name>.py, run as a notebook with the
+# section <name> of the configuration as its params, writes figures/<name>.{pdf,png}; its
+# caption is workflow/report/<name>.rst. What a figure reads beyond its own section:
+EXTRA = {
+    "fig6_limit": {"params": {"claims": config["claims"]}},
+    "fig7_rolling_resistance": {"params": {"claims": config["claims"]}},
+    "fig8_measurability": {
+        "params": {"film": config["film"]},
+        "output": {"json": ensure(FILM_MEASURABILITY, non_empty=True)},
+    },
+    "fig9_fit": {
+        "params": {"films": FILM_SPECS},
+        "input": {"csv": FILM_CSV, "json": FILM_FITS},
+    },
+}
 
-FIGURE_NAMES = yaml.safe_load(Path(workflow.basedir, "figures.yaml").read_text())
-FIGURES = expand("figures/{name}.{ext}", name=FIGURE_NAMES, ext=["pdf", "png"])
 
-
-for name in FIGURE_NAMES:
+for name in FIGURES:
 
     rule:
         name:
             name
         input:
-            **FIGURE_EXTRAS.get(name, {}).get("input", {}),
-            **notebook_inputs(f"scripts/{name}.py"),
+            **script_inputs(name, STYLE),
+            **EXTRA.get(name, {}).get("input", {}),
         output:
-            **FIGURE_EXTRAS.get(name, {}).get("output", {}),
+            **EXTRA.get(name, {}).get("output", {}),
             pdf=ensure(f"figures/{name}.pdf", non_empty=True),
             png=ensure(
                 report(
@@ -32,16 +39,51 @@ for name in FIGURE_NAMES:
             f"logs/{name}.log",
         benchmark:
             f"logs/benchmarks/{name}.tsv"
-        conda:
-            "../envs/turntable.yaml"
         params:
             **config.get(name, {}),
-            **FIGURE_EXTRAS.get(name, {}).get("params", {}),
+            **EXTRA.get(name, {}).get("params", {}),
             dpi=config["style"]["dpi"],
         script:
-            NOTEBOOK_JOB
+            "../scripts/as_notebook.py"
 
 
 rule figures:
     input:
-        FIGURES,
+        expand("figures/{name}.{ext}", name=FIGURES, ext=["pdf", "png"]),
+
+
+# The animation of the ball on the turntable, beside its no-slip limit (Pillow, no ffmpeg).
+rule animation:
+    input:
+        **script_inputs("animation", [*STYLE, "scripts/_style/animation.py"]),
+    output:
+        gif=ensure(
+            report(
+                "figures/animation.gif",
+                caption="../report/animation.rst",
+                category="Animation",
+            ),
+            non_empty=True,
+        ),
+        notebook=notebook("animation"),
+    log:
+        "logs/animation.log",
+    benchmark:
+        "logs/benchmarks/animation.tsv"
+    params:
+        **config["animation"],
+    script:
+        "../scripts/as_notebook.py"
+
+
+# The figure and the animation of README.md (docs/, committed): `make readme-figure`.
+rule readme_figure:
+    input:
+        png="figures/fig4_trajectories.png",
+        gif="figures/animation.gif",
+    output:
+        png="docs/fig4_trajectories.png",
+        gif="docs/animation.gif",
+    localrule: True
+    shell:
+        "cp {input.png:q} {output.png:q} && cp {input.gif:q} {output.gif:q}"

@@ -1,44 +1,32 @@
 # Parameter study of the Section 2 claims over a grid of (k, mu0): one job per inertia ratio
-# k (rule study_k, the wildcard), each independent, so that on a cluster (profiles/slurm/)
-# every k runs as its own job; rule study gathers them into results/study/summary.json and
-# a figure. All physics is in turntable.study.
+# k (on a cluster, each its own job), gathered into results/study/summary.json and a figure.
 import re
 
 STUDY_K = [str(k) for k in config["study"]["k"]]
-STUDY_OUTPUTS = [
-    "results/study/summary.json",
-    "results/study/summary.pdf",
-    "results/study/summary.png",
-]
+STUDY_OUTPUTS = expand("results/study/summary.{ext}", ext=["json", "pdf", "png"])
 
 
 rule study_k:
     input:
-        **notebook_inputs("scripts/study_k.py"),
+        **script_inputs("study_k"),
     output:
         json=ensure("results/study/k_{k}.json", non_empty=True),
-        notebook=notebook("study_k_{k}", k=STUDY_K),
+        notebook=notebook("study_k_{k}"),
     log:
         "logs/study/k_{k}.log",
     benchmark:
         "logs/benchmarks/study_k_{k}.tsv"
     wildcard_constraints:
         k="|".join(re.escape(k) for k in STUDY_K),
-    conda:
-        "../envs/turntable.yaml"
     params:
-        mu0_range=config["study"]["mu0_range"],
-        n_points=config["study"]["n_points"],
-        state=config["study"]["state"],
-        t_span=config["study"]["t_span"],
-        n_times=config["study"]["n_times"],
+        **{key: value for key, value in config["study"].items() if key != "k"},
     script:
-        NOTEBOOK_JOB
+        "../scripts/as_notebook.py"
 
 
 rule study:
     input:
-        **notebook_inputs("scripts/study_summary.py"),
+        **script_inputs("study_summary", STYLE),
         results=expand("results/study/k_{k}.json", k=STUDY_K),
     output:
         json=ensure("results/study/summary.json", non_empty=True),
@@ -56,9 +44,7 @@ rule study:
         "logs/study/summary.log",
     benchmark:
         "logs/benchmarks/study.tsv"
-    conda:
-        "../envs/turntable.yaml"
     params:
         dpi=config["style"]["dpi"],
     script:
-        NOTEBOOK_JOB
+        "../scripts/as_notebook.py"

@@ -1,0 +1,80 @@
+"""Run the job's script (input ``script``, a jupytext percent file) as a Jupyter notebook with
+nbclient, and save it with its outputs (output ``notebook``): the record of the run.
+
+A first cell defines the job's ``snakemake`` object from plain values; a last one shows what
+the script wrote. Cell ids, kernel flags and no timings make two runs write the same bytes.
+"""
+
+import os
+import pprint
+
+import jupytext
+import nbformat
+from nbclient import NotebookClient
+from nbclient.exceptions import CellExecutionError
+
+LEFT_OUT = {"script", "code", "notebook"}  # not read by the script
+
+
+def plain(items, files=True):
+    """`Namedlist(...)` source of a Snakemake input, output, log, params or wildcards."""
+    if files and not list(items.keys()):
+        return f"Namedlist(toclone={[str(v) for v in items]!r})"
+    named = {k: v for k, v in items.items() if k not in LEFT_OUT}
+    named = {
+        k: [str(f) for f in v] if files and isinstance(v, list) else v for k, v in named.items()
+    }
+    text = pprint.pformat(named, width=70, sort_dicts=False).replace("\n", "\n" + " " * 17)
+    return f"Namedlist(\n        fromdict={text},\n    )"
+
+
+FIRST = f"""\
+# The `snakemake` object of rule {snakemake.rule}: run from the repository's root.
+import sys
+from types import SimpleNamespace
+
+from snakemake.iocontainers import Namedlist
+
+snakemake = SimpleNamespace(
+    rule={snakemake.rule!r},
+    input={plain(snakemake.input)},
+    output={plain(snakemake.output)},
+    log={plain(snakemake.log)},
+    params={plain(snakemake.params, files=False)},
+    wildcards={plain(snakemake.wildcards, files=False)},
+    scriptdir={os.path.relpath(os.path.dirname(snakemake.input.script))!r},
+)
+sys.path.insert(0, snakemake.scriptdir)  # where the module _style is
+"""
+LAST = """\
+# What the script wrote: figures inline, the size of the other files.
+from pathlib import Path
+
+from IPython.display import Image, Markdown, display
+
+for item in snakemake.output:
+    for path in map(Path, item if isinstance(item, list) else [item]):
+        if path.suffix == ".png":
+            display(Image(filename=path, width=700))
+        else:
+            display(Markdown(f"`{path}`: {path.stat().st_size} bytes"))
+"""
+
+nb = jupytext.read(snakemake.input.script, fmt="py:percent")
+nb.cells = [nbformat.v4.new_code_cell(FIRST), *nb.cells, nbformat.v4.new_code_cell(LAST)]
+for index, cell in enumerate(nb.cells):
+    cell.id, cell.metadata = f"cell-{index}", {}
+os.environ["MPLBACKEND"] = "Agg"
+client = NotebookClient(
+    nb,
+    kernel_name="python3",
+    resources={"metadata": {"path": "."}},
+    record_timing=False,
+    extra_arguments=["--InteractiveShell.ast_node_interactivity=none", "--colors=nocolor"],
+)
+try:
+    client.execute()
+except CellExecutionError as exc:
+    raise SystemExit(f"{snakemake.input.script} failed as a notebook:\n{exc}") from None
+nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
+nbformat.write(nb, snakemake.output.notebook)

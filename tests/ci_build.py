@@ -1,14 +1,12 @@
-"""Builds of the project shared by the tests, and the helpers to make them.
+"""The builds of the workflow shared by the tests (all xdist workers, through a file lock).
 
-``shared_build``: the sources are copied into a temporary directory shared by all xdist
-workers of the session; the first worker to ask plans the whole workflow there (a dry run
-with the SLURM profile and the dry-run executor, for tests/test_study.py and
-test_notebooks.py) and builds the README figure (Fig. 4 copied to docs/, for
-tests/test_readme.py) with the project's own configuration. A file lock makes the other
-workers wait for that build and reuse it.
+Each copies the workflow's sources into a temporary directory and runs the project's
+Snakemake there, with the copy's package first on the module path:
 
-``base_config``: the project's configuration cut down, for the builds of everything that
-take seconds (tests/test_pipeline.py).
+- ``clean_build``: everything, with the configuration cut down (`CONFIG`: fewer curves,
+  samples and values of k, a low resolution), so that it takes seconds;
+- ``shared_build``: the project's own configuration, the README's copies built (target
+  readme_figure) and the whole workflow planned with the SLURM profile.
 """
 
 from __future__ import annotations
@@ -27,18 +25,20 @@ from shared_build import build_once, shared_dir
 
 ROOT = Path(__file__).resolve().parents[1]
 SNAKEMAKE = str(Path(sys.executable).with_name("snakemake"))
-# The one list of the figures (the workflow generates a rule for each).
 FIGURE_NAMES: list[str] = yaml.safe_load((ROOT / "workflow" / "figures.yaml").read_text())
 COPIED = ["config", "workflow", "scripts", "paper", "src", "profiles"]
-TARGETS = ["readme_figure"]
-
-
-def copy_env(workdir: Path) -> dict[str, str]:
-    """The environment of the project's .venv running the copy of the sources in `workdir`:
-    the copy's src/ first on the module path, so that its jobs import the copy's package
-    (the Snakefile refuses to run another tree's package: the editable install of .venv is
-    the project's src/, not the copy's)."""
-    return os.environ | {"PYTHONPATH": str(workdir / "src")}
+CONFIG: dict[str, Any] = {
+    "style": {"dpi": 60},
+    "fig2_spectrum": {"n_points": 200},
+    "fig3_modal_terms": {"mu0": [0.1], "n_points": 200},
+    "fig4_trajectories": {"mu0": [0.3, 1.0], "t_span": [[0.0, 20.0], [0.0, 30.0]]},
+    "fig5_damping_ratio": {"k": [0.4], "n_points": 200},
+    "fig6_limit": {"mu0_trajectories": [10.0], "mu0_layer": [100.0], "n_points": 200},
+    "fig7_rolling_resistance": {"n_grid": 20},
+    "study": {"k": [0.4], "n_points": 20, "n_times": 20},
+    "film": {"fps": 30.0},
+    "fig8_measurability": {"n_grid": 8},
+}
 
 
 def snakemake(workdir: Path, *args: str, timeout: float = 300) -> subprocess.CompletedProcess:
@@ -46,7 +46,7 @@ def snakemake(workdir: Path, *args: str, timeout: float = 300) -> subprocess.Com
     return subprocess.run(
         [SNAKEMAKE, *args],
         cwd=workdir,
-        env=copy_env(workdir),
+        env=os.environ | {"PYTHONPATH": str(workdir / "src")},
         capture_output=True,
         text=True,
         timeout=timeout,
@@ -54,82 +54,48 @@ def snakemake(workdir: Path, *args: str, timeout: float = 300) -> subprocess.Com
     )
 
 
-def base_config() -> dict[str, Any]:
-    """The project's configuration cut down: fewer curves, samples and values of k, a low
-    PNG resolution (the animation as configured: docs/animation.gif is compared with it).
-
-    Every script still runs through all of its code; only the lists are shorter.
-    """
-    config = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())
-    config["style"]["dpi"] = 60
-    for name in FIGURE_NAMES:
-        if "n_points" in config.get(name, {}):
-            config[name]["n_points"] = min(config[name]["n_points"], 200)
-    config["fig3_modal_terms"]["mu0"] = [0.1]
-    config["fig4_trajectories"].update(mu0=[0.3, 1.0], t_span=[[0.0, 20.0], [0.0, 30.0]])
-    config["fig5_damping_ratio"]["k"] = [0.4]
-    config["fig6_limit"].update(mu0_trajectories=[10.0], mu0_layer=[100.0])
-    config["fig7_rolling_resistance"]["n_grid"] = 20
-    config["study"].update(k=[0.4], n_points=20, n_times=20)
-    config["film"].update(fps=30.0)
-    config["fig8_measurability"]["n_grid"] = 8
-    return config
-
-
-def write_config(workdir: Path, config: dict[str, Any]) -> None:
-    (workdir / "config").mkdir(parents=True, exist_ok=True)
-    (workdir / "config" / "config.yaml").write_text(yaml.safe_dump(config, sort_keys=False))
-
-
-def copy_sources(dest: Path) -> Path:
-    """Copy the workflow's sources (no outputs) into `dest`."""
-    dest.mkdir(parents=True, exist_ok=True)
+def copy_sources(dest: Path, config: dict[str, Any] | None = None) -> Path:
+    """Copy the workflow's sources (no outputs) into `dest`, with `config` as its
+    config/config.yaml."""
     for name in COPIED:
-        src = ROOT / name
-        if src.is_dir():
-            shutil.copytree(src, dest / name, ignore=shutil.ignore_patterns("__pycache__"))
-        elif src.is_file():
-            shutil.copy2(src, dest / name)
+        shutil.copytree(ROOT / name, dest / name, ignore=shutil.ignore_patterns("__pycache__"))
+    if config is not None:
+        (dest / "config" / "config.yaml").write_text(yaml.safe_dump(config))
     return dest
 
 
+def _clean_build(workdir: Path) -> dict[str, Any]:
+    proc = snakemake(copy_sources(workdir, CONFIG), "--cores", "2")
+    return {"returncode": proc.returncode, "log": proc.stderr[-5000:]}
+
+
+def clean_build(tmp_path_factory: pytest.TempPathFactory, worker_id: str) -> Path:
+    """The directory of the clean build of everything (cut-down configuration)."""
+    workdir, record = build_once(shared_dir(tmp_path_factory, worker_id), "clean", _clean_build)
+    assert record["returncode"] == 0, record["log"]
+    return workdir
+
+
 def _build(workdir: Path) -> dict[str, Any]:
-    """Plan everything (in a second copy) while building the targets: both at once."""
-    plan_dir = copy_sources(workdir.with_name(workdir.name + "-plan"))
-    copy_sources(workdir)
-
-    def start(cwd: Path, *args: str) -> subprocess.Popen:
-        return subprocess.Popen(
-            [SNAKEMAKE, *args],
-            cwd=cwd,
-            env=copy_env(cwd),
-            stdout=subprocess.PIPE,
-            stderr=subprocess.STDOUT,
-            text=True,
-        )
-
-    plan = start(plan_dir, "--profile", "profiles/slurm", "--executor", "dryrun")
-    build = start(workdir, *TARGETS, "--cores", "2")
-    plan_log, _ = plan.communicate(timeout=300)
-    build_log, _ = build.communicate(timeout=300)
+    plan = snakemake(copy_sources(workdir), "--profile", "profiles/slurm", "--executor", "dryrun")
+    build = snakemake(workdir, "readme_figure", "--cores", "2")
     return {
         "plan_returncode": plan.returncode,
-        "plan": plan_log,
+        "plan": plan.stdout + plan.stderr,
         "build_returncode": build.returncode,
-        "build_log": build_log[-10000:],
+        "build_log": build.stderr[-5000:],
     }
 
 
 def shared_build(tmp_path_factory: pytest.TempPathFactory, worker_id: str) -> tuple[Path, dict]:
-    """The shared project directory and the record of its plan and build."""
+    """The build with the project's configuration, and the record of its plan and build."""
     return build_once(shared_dir(tmp_path_factory, worker_id), "ci-build", _build)
 
 
 def job_counts(plan: str) -> dict[str, int]:
     """The job table of a dry run ("Job stats"): {rule: count}, without the total."""
     counts: dict[str, int] = {}
-    table = plan.partition("Job stats:")[2]
-    for line in table.splitlines():
+    for line in plan.partition("Job stats:")[2].splitlines():
         words = line.split()
         if words and words[0] == "total":
             break

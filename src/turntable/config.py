@@ -143,7 +143,8 @@ def _mu0_samples(low: float, high: float, k: float) -> np.ndarray:
 def _late(end: float, mu0s: list[float], k: float, z0: Any) -> str | None:
     """Why the solution from z0 is not representable at `end` for one of mu0s, or None."""
     bound = max_time(np.asarray(mu0s), k)
-    for mu0 in np.asarray(mu0s)[2.0 * end > bound]:  # a state moves the bound less than half
+    worst_first = np.asarray(mu0s)[np.argsort(bound)]
+    for mu0 in worst_first[2.0 * end > np.sort(bound)]:  # a state moves the bound < half
         limit = float(max_time(mu0, k, z0))
         if end > limit:
             return (

@@ -13,6 +13,8 @@ rule claims:
         "logs/claims.log",
     benchmark:
         "logs/benchmarks/claims.tsv"
+    conda:
+        "../envs/turntable.yaml"
     params:
         claims=config["claims"],
     script:
@@ -34,5 +36,7 @@ rule claims_table:
         ),
     log:
         "logs/claims_table.log",
+    conda:
+        "../envs/turntable.yaml"
     script:
         "../scripts/claims_table.py"

@@ -39,6 +39,8 @@ for name in FIGURES:
             f"logs/{name}.log",
         benchmark:
             f"logs/benchmarks/{name}.tsv"
+        conda:
+            "../envs/turntable.yaml"
         params:
             **config.get(name, {}),
             **EXTRA.get(name, {}).get("params", {}),
@@ -70,6 +72,8 @@ rule animation:
         "logs/animation.log",
     benchmark:
         "logs/benchmarks/animation.tsv"
+    conda:
+        "../envs/turntable.yaml"
     params:
         **config["animation"],
     script:
@@ -84,6 +88,10 @@ rule readme_figure:
     output:
         png="docs/fig4_trajectories.png",
         gif="docs/animation.gif",
+    log:
+        "logs/readme_figure.log",
     localrule: True
+    conda:
+        "../envs/turntable.yaml"
     shell:
-        "cp {input.png:q} {output.png:q} && cp {input.gif:q} {output.gif:q}"
+        "(cp -v {input.png:q} {output.png:q} && cp -v {input.gif:q} {output.gif:q}) > {log:q}"

@@ -9,7 +9,12 @@ FILM_FITS = expand("results/film/{film}.json", film=FILM_SPECS)
 FILM_TRUTH = "results/film/synthetic.json"
 FILM_MEASURABILITY = "results/film/measurability.json"
 
-# `turntable fit` from the environment that runs Snakemake.
+
+# `turntable fit` from the environment that runs Snakemake (PATH passed on to remote jobs).
+envvars:
+    "PATH",
+
+
 os.environ["PATH"] = os.pathsep.join(
     [os.path.dirname(sys.executable), os.environ["PATH"]]
 )
@@ -26,6 +31,8 @@ rule synthetic_film:
         "logs/synthetic_film.log",
     benchmark:
         "logs/benchmarks/synthetic_film.tsv"
+    conda:
+        "../envs/turntable.yaml"
     params:
         film=config["film"],
         films=FILM_SPECS,
@@ -45,6 +52,8 @@ rule fit_film:
         "logs/benchmarks/fit_film_{film}.tsv"
     wildcard_constraints:
         film="|".join(FILM_SPECS),
+    conda:
+        "../envs/turntable.yaml"
     params:
         radius=config["film"]["radius_m"],
         rpm=config["film"]["rpm"],
@@ -77,6 +86,8 @@ rule film_page:
         ),
     log:
         "logs/film_page.log",
+    conda:
+        "../envs/turntable.yaml"
     params:
         names=["fig8_measurability", "fig9_fit"],
     script:

@@ -17,6 +17,8 @@ rule paper:
         "logs/paper.log",
     benchmark:
         "logs/benchmarks/paper.tsv"
+    conda:
+        "../envs/turntable.yaml"
     params:
         **config["paper"],
         # read by the article: the commit that built it, and the values of its own

@@ -23,6 +23,8 @@ rule figure_gallery:
         ),
     log:
         "logs/figure_gallery.log",
+    conda:
+        "../envs/turntable.yaml"
     params:
         names=FIGURES,
     script:

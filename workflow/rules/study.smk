@@ -18,6 +18,8 @@ rule study_k:
         "logs/benchmarks/study_k_{k}.tsv"
     wildcard_constraints:
         k="|".join(re.escape(k) for k in STUDY_K),
+    conda:
+        "../envs/turntable.yaml"
     params:
         **{key: value for key, value in config["study"].items() if key != "k"},
     script:
@@ -44,6 +46,8 @@ rule study:
         "logs/study/summary.log",
     benchmark:
         "logs/benchmarks/study.tsv"
+    conda:
+        "../envs/turntable.yaml"
     params:
         dpi=config["style"]["dpi"],
     script:

@@ -147,7 +147,7 @@ def test_the_rolling_ball_of_fig7_is_checked_too(defaults: dict) -> None:
         ),
         pytest.param(
             {"duration_s": 3000.0, "fps": 1.0},
-            "film.duration_s = 3000 s (t Omega = 10472) ends",
+            "film.duration_s = 3000 s at film.fps = 1 (t Omega = 10472) ends",
             id="late",
         ),
     ],

@@ -82,7 +82,7 @@ def test_every_script_ran_once_as_a_notebook_with_its_outputs(clean_build: Path)
         kinds = {o.output_type for c in code for o in c.outputs}
         assert not kinds & {"error", "execute_result"}, name
     fig4 = nbformat.read(found["fig4_trajectories"], as_version=4)
-    assert "'mu0': [0.3, 1.0]" in fig4.cells[0].source  # the values of this build
+    assert "'mu0': [0.1]" in nbformat.read(found["fig3_modal_terms"], 4).cells[0].source
     assert any("image/png" in o.data for o in fig4.cells[-1].outputs)  # the figure inline
 
 
@@ -138,7 +138,7 @@ def _same_values_in_another_order(copy: Path) -> None:
 
 def _change_a_parameter(copy: Path) -> None:
     config = yaml.safe_load((copy / "config/config.yaml").read_text())
-    config["fig4_trajectories"]["mu0"] = [0.3, 2.0]
+    config["fig3_modal_terms"]["mu0"] = [0.2]
     (copy / "config/config.yaml").write_text(yaml.safe_dump(config))
 
 
@@ -162,7 +162,7 @@ EDITS = {
         lambda c: _append(c / "workflow/report/fig2_spectrum.rst", "\n"),
         {"figure_gallery", "all"},
     ),
-    "a parameter": (_change_a_parameter, {"fig4_trajectories"} | DOWNSTREAM_OF_FIGURES),
+    "a parameter": (_change_a_parameter, {"fig3_modal_terms"} | DOWNSTREAM_OF_FIGURES),
     "the same values in another order": (_same_values_in_another_order, set()),
 }
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import copy
 import math
+import re
 import sys
 from collections.abc import Iterator, Mapping
 from pathlib import Path
@@ -34,6 +35,8 @@ MAX_GROWTH = 1.0e6
 #: Frames of a film: enough for the larger model of ``turntable fit`` (7 parameters), and
 #: not so many that a fit exhausts the memory.
 MIN_FRAMES, MAX_FRAMES = 16, 10**6
+#: A number that YAML reads as text: an exponent without a dot or a sign (1e-4, 1e5).
+NUMBER = r"[-+]?\d+(\.\d*)?[eE][-+]?\d+"
 
 #: The spans of the exact solution: section, span key, mu0 key, state key, and how it is
 #: drawn (n_points key, "growth" for a log time axis, None for a span not drawn).
@@ -86,45 +89,29 @@ def validate(config: dict[str, Any], schema: str | Path) -> list[str]:
     lines = []
     for error in sorted(validator.iter_errors(config), key=lambda e: list(map(str, e.path))):
         at = "".join(f"[{p}]" if isinstance(p, int) else f".{p}" for p in error.absolute_path)
-        text = isinstance(error.instance, str) and error.validator == "type"
-        hint = (
-            " (YAML reads it as text: write 1.0e-4)" if text and _is_float(error.instance) else ""
-        )
+        text = isinstance(error.instance, str) and re.fullmatch(NUMBER, error.instance)
+        hint = " (YAML reads it as text: write 1.0e-4)" if text else ""
         lines.append(f"{at[1:] or 'configuration'}: {error.message}{hint}")
     return lines
 
 
-def _is_float(text: str) -> bool:
-    try:
-        float(text)
-    except ValueError:
-        return False
-    return True
-
-
 def problems(config: Mapping[str, Any]) -> list[str]:
-    """Return one line per problem of a configuration that passed its schema.
-
-    Each line names the key (``section.key`` or ``section.key[i]``) and what is expected.
-    """
+    """Return one line per problem of a configuration that passed `validate`: the key
+    (``section.key[i]``) and what is expected."""
     found = list(_order(config))
-    if found:
-        return found
-    found += _film(config)
-    for spec in SPANS:
-        found += _spans(config, *spec)
-    return found + _animation(config)
+    if not found:
+        found = _film(config) + [p for spec in SPANS for p in _spans(config, *spec)]
+        found += _animation(config)
+    return found
 
 
 def _order(config: Mapping[str, Any]) -> Iterator[str]:
     """Pairs named ``*_span`` or ``*_range`` increase; names of films differ."""
     for section, values in config.items():
         for key, value in values.items():
-            if not key.endswith(("_span", "_range")):
-                continue
-            nested = isinstance(value[0], list)
+            nested = key.endswith(("_span", "_range")) and isinstance(value[0], list)
             for i, pair in enumerate(value if nested else [value]):
-                if not pair[0] < pair[1]:
+                if key.endswith(("_span", "_range")) and not pair[0] < pair[1]:
                     at = f"{section}.{key}" + (f"[{i}]" if nested else "")
                     yield f"{at} = {pair}: expected [start, end] with start < end"
     names = [film["name"] for film in config["synthetic_film"]["films"]]
@@ -133,133 +120,117 @@ def _order(config: Mapping[str, Any]) -> Iterator[str]:
             yield f"synthetic_film.films[{i}].name = {name!r}: expected a name of its own"
 
 
-def _mu0_samples(low: float, high: float, k: float) -> np.ndarray:
-    """A log grid of [low, high], 32 per decade, with the peak of alpha1."""
+def _grid(low: float, high: float, k: float) -> list[float]:
+    """[low, high], 32 values per decade and the peak of alpha1 (the fastest growth)."""
     grid = np.geomspace(low, high, max(2, math.ceil(32 * math.log10(high / low)) + 1))
     peak = float(alpha1_peak(k).mu0)
-    return np.append(grid, [peak] if low < peak < high else [])
+    return [*map(float, grid), *([peak] if low < peak < high else [])]
 
 
-def _late(end: float, mu0s: list[float], k: float, z0: Any) -> str | None:
-    """Why the solution from z0 is not representable at `end` for one of mu0s, or None."""
-    bound = max_time(np.asarray(mu0s), k)
-    worst_first = np.asarray(mu0s)[np.argsort(bound)]
-    for mu0 in worst_first[2.0 * end > np.sort(bound)]:  # a state moves the bound < half
-        limit = float(max_time(mu0, k, z0))
-        if end > limit:
+def _late(end: float, model: str, coefficients: list[float], k: float, z0: Any) -> str | None:
+    """Why the ball of `model` from z0 leaves the doubles by `end` for one of the
+    coefficients (mu0 or delta), or None. Those whose growth alone reaches half the range of
+    the doubles are tried, fastest first: a state moves the bound by far less."""
+    if not coefficients:
+        return None
+    c = np.asarray(coefficients, dtype=float)
+    slipping = model == "slipping"
+    rate = np.asarray(spectrum(c, k).alpha1 if slipping else rolling.growth_rate(c, k))
+    order = np.argsort(-rate)
+    for x in c[order][rate[order] * end > 0.5 * math.log(sys.float_info.max)]:
+        if slipping and end > (limit := float(max_time(x, k, z0))):
             return (
-                f"ends at t = {end:g}, after t = {limit:.6g}, where the solution for "
-                f"mu0 = {mu0:.6g}, k = {k:g} leaves the doubles; expected t <= {limit:.6g}"
+                f"ends at t = {end:g}, after t = {limit:.6g}, where the slipping ball "
+                f"(mu0 = {x:.6g}, k = {k:g}) leaves the doubles; expected t <= {limit:.6g}"
             )
+        try:
+            if not slipping:
+                rolling.solve(z0, [end], x, k)
+        except ValueError as exc:
+            return f"ends at t = {end:g}, too late for the rolling ball (delta = {x:.6g}): {exc}"
     return None
 
 
 def _spans(
-    config: Mapping[str, Any],
-    section: str,
-    key: str,
-    mu0_key: str,
-    state_key: str,
-    drawn: str | None,
+    config: Mapping[str, Any], section: str, key: str, mu0_key: str, state: str, drawn: str | None
 ) -> list[str]:
-    """The span `section.key` ends where the solution is representable and, if drawn,
-    where the figure still shows it: a growth of at most MAX_GROWTH, and enough points."""
+    """The span `section.key` ends where the solution is representable and, if `drawn`,
+    where the figure shows it: a growth of at most MAX_GROWTH, and enough points per turn."""
     s = config[section]
-    mu0s = list(s[mu0_key]) if isinstance(s[mu0_key], list) else [s[mu0_key]]
-    value = s[key]
-    if isinstance(value, list) and isinstance(value[0], list):  # one span per mu0
+    mu0s = s[mu0_key] if isinstance(s[mu0_key], list) else [s[mu0_key]]
+    value = s[key] if isinstance(s[key], list) else [0.0, s[key]]
+    if isinstance(value[0], list):  # one span per mu0
         if len(value) != len(mu0s):
-            return [
-                f"{section}.{key} has {len(value)} spans for {len(mu0s)} values of "
-                f"{section}.{mu0_key}: expected one span each"
-            ]
+            n = f"{len(value)} spans for {len(mu0s)} values of {section}.{mu0_key}"
+            return [f"{section}.{key} has {n}: expected one span each"]
         cases = [
-            (f"{section}.{key}[{i}]", span, [m])
-            for i, (span, m) in enumerate(zip(value, mu0s, strict=True))
+            (f"{section}.{key}[{i}]", v, [m])
+            for i, (v, m) in enumerate(zip(value, mu0s, strict=True))
         ]
     else:
-        span = value if isinstance(value, list) else [0.0, value]
-        cases = [(f"{section}.{key}", span, mu0s)]
-    found = []
+        cases = [(f"{section}.{key}", value, mu0s)]
+    comparison, found = s.get("comparison"), []
     for k in s["k"] if isinstance(s["k"], list) else [s["k"]]:
-        comparison = s.get("comparison")
-        z0 = no_slip_state(s[state_key], k) if comparison else s[state_key]
+        z0 = no_slip_state(s[state], k) if comparison else s[state]
         for at, (t0, t1), ms in cases:
-            ms = list(_mu0_samples(*ms, k)) if mu0_key.endswith("_range") else ms
-            why = _late(t1, ms, k, z0)
-            # (growth rate, fastest angular frequency) of each motion drawn
-            motions = [(float(spectrum(m, k).alpha1), float(spectrum(m, k).beta)) for m in ms]
-            for m in ms if comparison and not why else []:
-                delta = float(rolling.matched_delta(m, k, comparison))
-                try:
-                    rolling.solve(z0, [t1], delta, k)
-                except ValueError as exc:
-                    why = f"ends at t = {t1:g}, too late for the rolling ball: {exc}"
-                r = rolling.spectrum(delta, k)
-                motions.append((float(r.sigma_g), max(abs(float(r.nu_g)), abs(float(r.nu_c)))))
-            if why:
-                found.append(f"{at} {why}")
+            ms = _grid(*ms, k) if mu0_key.endswith("_range") else ms
+            ds = [float(rolling.matched_delta(m, k, comparison)) for m in ms if comparison]
+            why = _late(t1, "slipping", ms, k, z0) or _late(t1, "rolling_resistance", ds, k, z0)
+            if why or not drawn:
+                found += [f"{at} {why}"] if why else []
                 continue
-            if drawn is None:
-                continue
-            rate = max(rate for rate, _ in motions)
+            # growth rates and fastest angular frequencies of the motions drawn
+            sp, r = [spectrum(m, k) for m in ms], [rolling.spectrum(d, k) for d in ds]
+            rate = max([float(x.alpha1) for x in sp] + [float(x.sigma_g) for x in r])
+            freqs = [float(x.beta) for x in sp] + [
+                abs(float(f)) for x in r for f in (x.nu_g, x.nu_c)
+            ]
+            turns = max(freqs) * (t1 - t0) / (2 * math.pi)
             if rate * t1 > math.log(MAX_GROWTH):
                 found.append(
-                    f"{at} = [{t0:g}, {t1:g}]: the motion grows by e^({rate:.3g} t), "
-                    f"more than {MAX_GROWTH:.0e} by the end; expected t_end <= "
+                    f"{at} = [{t0:g}, {t1:g}]: the motion grows by e^({rate:.3g} t), more "
+                    f"than {MAX_GROWTH:.0e} by the end; expected t_end <= "
                     f"{math.log(MAX_GROWTH) / rate:.4g}"
                 )
-            turns = max(f for _, f in motions) * (t1 - t0) / (2 * math.pi)
             if drawn != "growth" and s[drawn] - 1 < MIN_POINTS_PER_TURN * turns:
-                need = math.ceil(MIN_POINTS_PER_TURN * turns) + 1
                 found.append(
-                    f"{at} = [{t0:g}, {t1:g}] holds {turns:.4g} turns of the spiral, "
-                    f"drawn with {section}.{drawn} = {s[drawn]} points; expected at "
-                    f"least {MIN_POINTS_PER_TURN} points per turn: {drawn} >= {need} "
-                    "or a shorter span"
+                    f"{at} = [{t0:g}, {t1:g}] holds {turns:.4g} turns, drawn with "
+                    f"{section}.{drawn} = {s[drawn]} points; expected at least "
+                    f"{MIN_POINTS_PER_TURN} per turn: "
+                    f"{drawn} >= {math.ceil(MIN_POINTS_PER_TURN * turns) + 1} or a shorter span"
                 )
     return found
 
 
 def _film(config: Mapping[str, Any]) -> list[str]:
-    """The film has from MIN_FRAMES to MAX_FRAMES frames, and every motion it is compared
-    with (the synthetic films, Fig. 8's range) is representable until its end."""
+    """The film has from MIN_FRAMES to MAX_FRAMES frames, and the motions it is compared
+    with (the synthetic films, Fig. 8's range) stay representable until its end."""
     f = config["film"]
     n = math.floor(f["duration_s"] * f["fps"] * (1.0 + 1e-12)) + 1
+    given = f"film.duration_s = {f['duration_s']:g} s at film.fps = {f['fps']:g}"
     if not MIN_FRAMES <= n <= MAX_FRAMES:
-        return [
-            f"film.duration_s = {f['duration_s']:g} s at film.fps = {f['fps']:g} gives "
-            f"{n} frames; expected from {MIN_FRAMES} to {MAX_FRAMES} frames"
-        ]
+        return [f"{given} gives {n} frames; expected from {MIN_FRAMES} to {MAX_FRAMES} frames"]
     try:
         rig = rig_from_config(f)
     except ValueError as exc:
         return [f"film: {exc}"]
     k, end = rig.setup.k, rig.setup.omega * (n - 1) / f["fps"]
-    low, high = config["fig8_measurability"]["mu0_range"]
-    cases = [(film["model"], [film["coefficient"]]) for film in config["synthetic_film"]["films"]]
-    grid = np.geomspace(low, high, max(2, math.ceil(32 * math.log10(high / low)) + 1))
-    late = grid[np.asarray(rolling.growth_rate(grid, k)) * end > 0.5 * math.log(sys.float_info.max)]
-    cases += [("slipping", list(_mu0_samples(low, high, k))), ("rolling_resistance", list(late))]
-    for model, coefficients in cases:
-        if model == "slipping":
-            why = _late(end, coefficients, k, rig.state0)
-        else:
-            why = None
-            for delta in coefficients:
-                try:
-                    rolling.solve(no_slip_state(rig.state0, k), [end], delta, k)
-                except ValueError as exc:
-                    why = f"ends too late for the rolling ball (delta = {delta:.6g}): {exc}"
-                    break
-        if why:
-            return [f"film.duration_s = {f['duration_s']:g} s (t Omega = {end:.6g}) {why}"]
+    grid = _grid(*config["fig8_measurability"]["mu0_range"], k)
+    for model in ("slipping", "rolling_resistance"):
+        z0 = rig.state0 if model == "slipping" else no_slip_state(rig.state0, k)
+        cs = [
+            film["coefficient"]
+            for film in config["synthetic_film"]["films"]
+            if film["model"] == model
+        ]
+        if why := _late(end, model, cs + grid, k, z0):
+            return [f"{given} (t Omega = {end:.6g}) {why}"]
     return []
 
 
 def _animation(config: Mapping[str, Any]) -> list[str]:
-    """Both balls of the animation stay within its panels: at most size/2 - 1.5 R from the
-    axis, so that the ball is drawn at least two pixels wide."""
+    """Both balls of the animation stay at most size/2 - 1.5 R from the axis, so that they
+    are drawn at least two pixels wide."""
     a = config["animation"]
     t = np.linspace(0.0, a["t_end"], (a["n_frames"] - 1) * a["substeps"] + 1)
     paths = [solve(a["state"], t, a["mu0"], a["k"]), nonholonomic(a["state"], t, a["k"])]

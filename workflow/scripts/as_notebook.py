@@ -20,9 +20,10 @@ def plain(items, files=True):
     """`Namedlist(...)` source of a Snakemake input, output, log, params or wildcards."""
     if files and not list(items.keys()):
         return f"Namedlist(toclone={[str(v) for v in items]!r})"
-    named = {k: v for k, v in items.items() if k not in LEFT_OUT}
     named = {
-        k: [str(f) for f in v] if files and isinstance(v, list) else v for k, v in named.items()
+        k: [str(f) for f in v] if files and isinstance(v, list) else v
+        for k, v in items.items()
+        if k not in LEFT_OUT
     }
     text = pprint.pformat(named, width=70, sort_dicts=False).replace("\n", "\n" + " " * 17)
     return f"Namedlist(\n        fromdict={text},\n    )"

@@ -9,6 +9,7 @@ project's .venv with the copy's package first on the module path.
 
 from __future__ import annotations
 
+import copy
 import os
 import shutil
 import subprocess
@@ -20,6 +21,7 @@ import pytest
 import yaml
 
 from shared_build import build_once, shared_dir
+from turntable.config import validate
 
 ROOT = Path(__file__).resolve().parents[1]
 SNAKEMAKE = str(Path(sys.executable).with_name("snakemake"))
@@ -36,6 +38,13 @@ CONFIG: dict[str, Any] = {
     "fig8_measurability": {"n_grid": 8},
     "claims": {},
 }
+
+
+def full_config(config: dict[str, Any] | None = None) -> dict[str, Any]:
+    """`config` with the defaults of the schema filled in: without one, the reference values."""
+    config = copy.deepcopy(config or {})
+    assert validate(config, ROOT / "workflow" / "schemas" / "config.schema.yaml") == []
+    return config
 
 
 def snakemake(workdir: Path, *args: str, timeout: float = 300) -> subprocess.CompletedProcess:

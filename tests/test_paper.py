@@ -20,6 +20,8 @@ from pathlib import Path
 import pytest
 import yaml
 
+from ci_build import full_config
+
 # The clean build of the workflow, shared with tests/test_pipeline.py.
 from test_pipeline import clean_build, shared_tmp  # noqa: F401
 from turntable.provenance import provenance
@@ -298,9 +300,9 @@ def paper_tree(clean_build: Path, tmp_path_factory: pytest.TempPathFactory) -> P
     tree = tmp_path_factory.mktemp("paper-tree")
     shutil.copytree(clean_build / "figures", tree / "figures")
     shutil.copytree(ROOT / "paper", tree / "paper", ignore=shutil.ignore_patterns("*.pdf"))
-    config = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())
+    config = full_config()
     assert (
-        yaml.safe_load((clean_build / "config/config.yaml").read_text())["claims"]
+        full_config(yaml.safe_load((clean_build / "config/config.yaml").read_text()))["claims"]
         == (config["claims"])
     )
     (tree / "results").mkdir()
@@ -325,9 +327,7 @@ def test_pdf_names_the_commit_that_built_it_and_links_the_scripts(paper_tree: Pa
     )
     assert built == {"commit": BUILT_FROM, "dirty": True}
     links = set(json.loads(typst.query(main, "link", field="dest", root=str(paper_tree))))
-    repository = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())["paper"][
-        "repository"
-    ]
+    repository = full_config()["paper"]["repository"]
     for stem in sorted(p.stem for p in (ROOT / "scripts").glob("fig*.py")):
         linked = f"{repository}/blob/{BUILT_FROM}/scripts/{stem}.py" in links
         assert linked != (stem in NOT_YET_IN_ARTICLE), stem

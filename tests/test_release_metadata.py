@@ -18,6 +18,8 @@ import jsonschema
 import pytest
 import yaml
 
+from ci_build import full_config
+
 ROOT = Path(__file__).resolve().parents[1]
 SCHEMA = json.loads(
     (ROOT / "tests" / "data" / "citation-file-format-1.2.0.schema.json").read_text()
@@ -86,7 +88,7 @@ def test_metadata_agree() -> None:
     assert cff["repository-code"] in related
     assert project["license-files"] == ["LICENSE"]
     assert (ROOT / "LICENSE").read_text().startswith("MIT License")
-    config = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())
+    config = full_config()
     assert config["paper"]["repository"] == cff["repository-code"]
 
 
@@ -162,7 +164,7 @@ def test_standardized_usage_layout() -> None:
     assert (ROOT / "workflow" / "Snakefile").is_file()
     assert not (ROOT / "Snakefile").exists()
     readme = (ROOT / "config" / "README.md").read_text(encoding="utf-8")
-    config = yaml.safe_load((ROOT / "config" / "config.yaml").read_text(encoding="utf-8"))
+    config = full_config()
     figures = yaml.safe_load((ROOT / "workflow" / "figures.yaml").read_text(encoding="utf-8"))
     for section in config:
         named = f"`{section}`" in readme

@@ -16,7 +16,7 @@ import pytest
 import yaml
 
 import turntable.study as study
-from ci_build import job_counts, shared_build
+from ci_build import CONFIG, full_config, job_counts, shared_build
 from turntable import Spectrum
 from turntable.reference import K_BALL, exact_roots
 
@@ -227,7 +227,7 @@ def test_one_job_per_k_with_the_slurm_profile(
     _, record = shared_build(tmp_path_factory, worker_id)
     plan = record["plan"]
     assert record["plan_returncode"] == 0, plan
-    config = yaml.safe_load((ROOT / "config/config.yaml").read_text())
+    config = full_config(CONFIG)
     profile = yaml.safe_load((ROOT / "profiles/slurm/config.yaml").read_text())
     assert profile["executor"] == "slurm"
     counts = job_counts(plan)

@@ -281,7 +281,7 @@ def fit_command(args: argparse.Namespace) -> int:
     for message in out["warnings"]:
         _warn(message)
     if args.plot is not None:
-        from turntable import fitplot
+        from turntable.fit import plot as fitplot
 
         try:
             with warnings.catch_warnings(), np.errstate(all="ignore"):

@@ -109,7 +109,7 @@ def build_report(
             "reference_digits": {
                 "eigenvalues": reference.DPS,
                 "characteristic_roots": reference.ROOTS_DPS,
-                "rolling": reference.ROLLING_DPS,
+                "rolling": reference.rolling.DPS,
             },
             "order": [r["id"] for r in records],
             "summary": counts,

@@ -452,7 +452,7 @@ def test_vertical_spin_fed_into_the_slip_fails(monkeypatch: pytest.MonkeyPatch) 
     The mistake: the contact point's velocity taken from the whole position vector of the
     centre, w x (-r), instead of w x (-R gamma); then wz enters the planar motion.
     """
-    from turntable.claims import _checks_spectrum as checks
+    from turntable.claims import _checks_model as checks
 
     ne = importlib.import_module("turntable.newton_euler")
 

@@ -17,6 +17,7 @@ import pytest
 import turntable as tt
 from test_pipeline import clean_build, shared_tmp  # noqa: F401
 from turntable import cli, film, fit
+from turntable._json import finite_or_none
 from turntable.fit import plot as fitplot
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -763,7 +764,7 @@ def test_plot_draws_missing_values_and_limits(tmp_path: Path) -> None:
 
     camera = film.Camera(30.0, 3e-4, 6.0)
     data = film.read_film(_rig_file(tmp_path, "slipping", 3000.0, camera, 1))
-    out = cli._finite_json(fit.result_json(fit.fit_film(data, RIG), RIG, data))
+    out = finite_or_none(fit.result_json(fit.fit_film(data, RIG), RIG, data))
     assert out["slipping"]["mu0"] is None
     out["rolling_resistance"] = {
         key: value for key, value in out["rolling_resistance"].items() if "limit" not in key

@@ -9,6 +9,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from turntable import _validate
+from turntable._json import finite_or_none
 from turntable.film import Film, Setup, check_setup
 from turntable.fit.diagnose import (
     CONSISTENCY_Z,
@@ -19,10 +20,6 @@ from turntable.fit.diagnose import (
 )
 from turntable.fit.models import COEFFICIENT, MIN_DOF, _check_model, positions
 from turntable.fit.results import DECISIVE, WHITENESS_Z, FilmFit
-
-
-def _finite(x: float) -> float | None:
-    return float(x) if math.isfinite(x) else None
 
 
 def result_json(
@@ -74,8 +71,8 @@ def result_json(
                 f"free contradicts the given ones (|z| > {CONSISTENCY_Z:g}) or selects the "
                 f"other model; no selection if N - K - 1 < {MIN_DOF}"
             ),
-            "aicc_difference": _finite(result.aicc_difference),
-            "akaike_weights": {m: _finite(w) for m, w in result.akaike_weights.items()},
+            "aicc_difference": finite_or_none(result.aicc_difference),
+            "akaike_weights": {m: finite_or_none(w) for m, w in result.akaike_weights.items()},
             "decisive": bool(shown.decisive),
             "reason": shown.reason or None,
         },
@@ -93,15 +90,18 @@ def result_json(
             entry.update(
                 {
                     name: f.coefficient,
-                    f"{name}_stderr": _finite(f.stderr),
-                    f"{name}_relative_stderr": _finite(f.log_stderr),
-                    f"{name}_ci95": [_finite(lo), _finite(hi)],
+                    f"{name}_stderr": finite_or_none(f.stderr),
+                    f"{name}_relative_stderr": finite_or_none(f.log_stderr),
+                    f"{name}_ci95": finite_or_none([lo, hi]),
                 }
             )
             if mass is not None:
                 entry[f"{name}_dim_{unit}"] = f.coefficient * factor
-                entry[f"{name}_dim_stderr_{unit}"] = _finite(f.stderr * factor)
-                entry[f"{name}_dim_ci95_{unit}"] = [_finite(lo * factor), _finite(hi * factor)]
+                entry[f"{name}_dim_stderr_{unit}"] = finite_or_none(f.stderr * factor)
+                entry[f"{name}_dim_ci95_{unit}"] = [
+                    finite_or_none(lo * factor),
+                    finite_or_none(hi * factor),
+                ]
         else:
             kind = "lower" if f.bound == "upper" else "upper"
             entry.update(
@@ -118,23 +118,25 @@ def result_json(
                 entry[f"{name}_dim_{kind}_limit_{unit}"] = f.limit * factor
         entry.update(
             {
-                "rms_residual_m": _finite(f.rms_residual),
-                "aic": _finite(f.aic),
-                "aicc": _finite(f.aicc),
+                "rms_residual_m": finite_or_none(f.rms_residual),
+                "aic": finite_or_none(f.aic),
+                "aicc": finite_or_none(f.aicc),
                 "n_parameters": f.n_parameters,
-                "state0": [_finite(v) for v in f.state0],
+                "state0": [finite_or_none(v) for v in f.state0],
                 "converged": f.converged,
                 "at_bound": f.at_bound,
                 "omega_rad_s": f.omega,
-                "omega_stderr_rad_s": _finite(f.omega_stderr),
+                "omega_stderr_rad_s": finite_or_none(f.omega_stderr),
                 "axis_m": list(f.axis),
                 "axis_stderr_m": (
-                    [_finite(v) for v in f.axis_stderr] if math.isfinite(f.axis_stderr[0]) else None
+                    [finite_or_none(v) for v in f.axis_stderr]
+                    if math.isfinite(f.axis_stderr[0])
+                    else None
                 ),
-                "residual_lag1_autocorrelation": _finite(f.autocorrelation),
-                "residual_lag1_white_sd": _finite(f.autocorrelation_sd),
+                "residual_lag1_autocorrelation": finite_or_none(f.autocorrelation),
+                "residual_lag1_white_sd": finite_or_none(f.autocorrelation_sd),
                 "residuals_white": f.white,
-                "orbital_turns": _finite(
+                "orbital_turns": finite_or_none(
                     f.orbital_rate * f.omega * (film.t[-1] - film.t[0]) / (2.0 * math.pi)
                 ),
             }
@@ -147,15 +149,15 @@ def result_json(
             "freed": list(check.freed),
             "model": check.model,
             "selected": check.refit.selected,
-            "aicc_difference": _finite(check.refit.aicc_difference),
+            "aicc_difference": finite_or_none(check.refit.aicc_difference),
             "decisive": check.refit.decisive,
             "selection_changed": check.selection_changed,
             "omega_rad_s": g.omega,
-            "omega_stderr_rad_s": _finite(g.omega_stderr),
-            "omega_z": _finite(check.omega_z),
+            "omega_stderr_rad_s": finite_or_none(g.omega_stderr),
+            "omega_z": finite_or_none(check.omega_z),
             "axis_m": list(g.axis),
-            "axis_stderr_m": [_finite(v) for v in g.axis_stderr],
-            "axis_z": [_finite(v) for v in check.axis_z],
+            "axis_stderr_m": [finite_or_none(v) for v in g.axis_stderr],
+            "axis_z": [finite_or_none(v) for v in check.axis_z],
             "threshold_z": CONSISTENCY_Z,
         }
     out["warnings"] = problems(result, film, setup, check)
@@ -170,7 +172,7 @@ def result_json(
         "duration_s": duration,
         "turntable_turns": float(setup.omega * duration / (2.0 * math.pi)),
         "ball_turns": (
-            _finite(selected.orbital_rate * selected.omega * duration / (2.0 * math.pi))
+            finite_or_none(selected.orbital_rate * selected.omega * duration / (2.0 * math.pi))
             if selected
             else None
         ),

@@ -955,6 +955,8 @@ def test_non_finite_values_are_refused() -> None:
 
 
 def test_git_commit_outside_a_checkout_is_unknown(tmp_path: Path) -> None:
-    assert report.git_commit(tmp_path) == "unknown"
-    commit = report.git_commit(ROOT)
+    from turntable.provenance import git_state
+
+    assert git_state(tmp_path)[0] == "unknown"
+    commit = git_state(ROOT)[0]
     assert commit == "unknown" or len(commit) == 40

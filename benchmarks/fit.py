@@ -29,7 +29,7 @@ Statistics over random films, in four regimes:
     fit (the same ball in SI units): how often the command warns, and how often it selects
     the wrong model without any warning.
 
-Films are the exact solution plus Gaussian noise (`turntable.film.simulate_film`), fitted
+Films are the exact solution plus Gaussian noise (`turntable.fit.simulate_film`), fitted
 with both models, the check with Omega and the axis free included.  Coverage: the fraction
 of films whose true coefficient lies within 2 reported standard errors of the fit of the
 true model (0.9545 expected; its binomial standard deviation is given), and the fraction
@@ -149,7 +149,7 @@ def bench_time(repeat: int) -> dict[str, Any]:
     config = _config()
     rig = film.rig_from_config(config["film"])
     (spec,) = [f for f in config["synthetic_film"]["films"] if f["name"] == "slipping"]
-    data = film.simulate_film(
+    data = fit.simulate_film(
         spec["model"], spec["coefficient"], rig.state0, rig.setup, rig.camera, spec["seed"]
     )
     result = fit.fit_film(data, rig.setup)
@@ -205,9 +205,9 @@ def _one_film(regime: str, seed: int, rng: np.random.Generator) -> dict[str, Any
         z_true[2:] /= OMEGA_ERROR
         if model == "rolling_resistance":
             z_true = tt.no_slip_state(z_true, setup.k)
-        data = film.simulate_film(model, c, z_true, true, camera, seed)
+        data = fit.simulate_film(model, c, z_true, true, camera, seed)
     else:
-        data = film.simulate_film(model, c, z0, setup, camera, seed)
+        data = fit.simulate_film(model, c, z0, setup, camera, seed)
     result = fit.fit_film(data, setup)
     check = fit.consistency(data, setup, result)
     warnings = fit.problems(result, data, setup, check)
@@ -325,7 +325,7 @@ def bench_reliable_level(n_seeds: int) -> dict[str, Any]:
         predicted = fit.predicted_stderr("slipping", mu0, rig.state0, rig.setup, rig.camera) / mu0
         logs, at_bound = [], 0
         for seed in range(n_seeds):
-            data = film.simulate_film("slipping", mu0, rig.state0, rig.setup, rig.camera, seed)
+            data = fit.simulate_film("slipping", mu0, rig.state0, rig.setup, rig.camera, seed)
             f = fit.fit_model(data, rig.setup, "slipping")
             logs.append(math.log(f.coefficient))
             at_bound += f.at_bound
@@ -357,7 +357,7 @@ def bench_wrong_rate() -> dict[str, Any]:
     config = _config()
     rig = film.rig_from_config(config["film"])
     (spec,) = [f for f in config["synthetic_film"]["films"] if f["name"] == "slipping"]
-    data = film.simulate_film(
+    data = fit.simulate_film(
         spec["model"], spec["coefficient"], rig.state0, rig.setup, rig.camera, spec["seed"]
     )
     given = rig.setup._replace(omega=film.rpm_to_omega(33.2))

@@ -18,7 +18,8 @@ from pathlib import Path
 from matplotlib.lines import Line2D
 
 from _style import DOUBLE, save, setup, subplots
-from turntable import film, fit, fitplot
+from turntable import film, fit
+from turntable.fit import plot as fitplot
 
 setup(snakemake)
 p = snakemake.params

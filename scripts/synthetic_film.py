@@ -16,14 +16,14 @@ import os
 from pathlib import Path
 
 import turntable as tt
-from turntable import film
+from turntable import film, fit
 
 logging.basicConfig(filename=snakemake.log[0], level=logging.INFO, filemode="w")
 p = snakemake.params
 rig = film.rig_from_config(p.film)
 truth = {
     "synthetic": True,
-    "note": "SYNTHETIC DATA: simulated by turntable.film.simulate_film, not measured",
+    "note": "SYNTHETIC DATA: simulated by turntable.fit.simulate_film, not measured",
     "setup": {
         "radius_m": rig.setup.radius,
         "omega_rad_s": rig.setup.omega,
@@ -46,8 +46,8 @@ for path in snakemake.output.csv:
     if spec["model"] == "rolling_resistance":
         z0 = tt.no_slip_state(z0, rig.setup.k)
     args = (spec["model"], spec["coefficient"], z0, rig.setup, rig.camera, spec["seed"])
-    data = film.simulate_film(*args)
-    film.write_film(path, data, film.synthetic_header(*args))
+    data = fit.simulate_film(*args)
+    film.write_film(path, data, fit.synthetic_header(*args))
     truth["films"][name] = {
         "csv": path,
         "model": spec["model"],

@@ -452,7 +452,7 @@ def test_vertical_spin_fed_into_the_slip_fails(monkeypatch: pytest.MonkeyPatch) 
     The mistake: the contact point's velocity taken from the whole position vector of the
     centre, w x (-r), instead of w x (-R gamma); then wz enters the planar motion.
     """
-    from turntable.claims import _checks_spectrum as checks
+    from turntable.claims import _checks_model as checks
 
     ne = importlib.import_module("turntable.newton_euler")
 
@@ -955,6 +955,8 @@ def test_non_finite_values_are_refused() -> None:
 
 
 def test_git_commit_outside_a_checkout_is_unknown(tmp_path: Path) -> None:
-    assert report.git_commit(tmp_path) == "unknown"
-    commit = report.git_commit(ROOT)
+    from turntable.provenance import git_state
+
+    assert git_state(tmp_path)[0] == "unknown"
+    commit = git_state(ROOT)[0]
     assert commit == "unknown" or len(commit) == 40

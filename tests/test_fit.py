@@ -271,7 +271,7 @@ def test_fit_does_not_depend_on_the_clock_or_the_origin() -> None:
     axis), changes nothing but state0's time and the recorded axis."""
     rng = np.random.default_rng(3)
     setup, c, z0 = draw_truth(rng, "slipping")
-    data = film.simulate_film("slipping", c, z0, setup, CAMERA, seed=5)
+    data = fit.simulate_film("slipping", c, z0, setup, CAMERA, seed=5)
     a = fit.fit_model(data, setup, "slipping")
     shift = np.array([0.3, -0.7])
     moved = film.Film(data.t + 1000.0, data.x + shift[0], data.y + shift[1])
@@ -286,7 +286,7 @@ def test_fit_does_not_depend_on_the_clock_or_the_origin() -> None:
 def test_rolling_fit_starts_on_the_constraint() -> None:
     rng = np.random.default_rng(4)
     setup, c, z0 = draw_truth(rng, "rolling_resistance")
-    data = film.simulate_film("rolling_resistance", c, z0, setup, CAMERA, seed=1)
+    data = fit.simulate_film("rolling_resistance", c, z0, setup, CAMERA, seed=1)
     f = fit.fit_model(data, setup, "rolling_resistance")
     assert_allclose(rolling.slip_velocity(f.state0), 0.0, atol=1e-12)
     assert f.n_parameters == 5
@@ -298,7 +298,7 @@ def test_aicc_and_weights() -> None:
     selection and the weights exp(-Delta/2), normalised, use AICc."""
     rng = np.random.default_rng(8)
     setup, c, z0 = draw_truth(rng, "slipping")
-    data = film.simulate_film("slipping", c, z0, setup, CAMERA, seed=2)
+    data = fit.simulate_film("slipping", c, z0, setup, CAMERA, seed=2)
     r = fit.fit_film(data, setup)
     n = 2 * data.t.size
     for f in r.fits.values():
@@ -334,7 +334,7 @@ def test_dimensional_coefficients() -> None:
     }
     for model, c in truth.items():
         z = z0 if model == "slipping" else tt.no_slip_state(z0, 0.4)
-        data = film.simulate_film(model, c, z, setup, CAMERA, seed=9)
+        data = fit.simulate_film(model, c, z, setup, CAMERA, seed=9)
         out = fit.result_json(fit.fit_film(data, setup), setup, data, mass=mass)
         name, value, unit = dims[model]
         entry = out[model]
@@ -345,7 +345,7 @@ def test_dimensional_coefficients() -> None:
 def test_fitted_positions_from_the_json() -> None:
     rng = np.random.default_rng(12)
     setup, c, z0 = draw_truth(rng, "slipping")
-    data = film.simulate_film("slipping", c, z0, setup, CAMERA, seed=3)
+    data = fit.simulate_film("slipping", c, z0, setup, CAMERA, seed=3)
     r = fit.fit_film(data, setup)
     out = fit.result_json(r, setup, data)
     for model in fit.MODELS:
@@ -390,19 +390,19 @@ def test_simulated_film(tmp_path: Path) -> None:
     setup = film.Setup(0.005, 3.0, 0.4, (0.1, 0.0))
     camera = film.Camera(fps=100.0, noise=2e-4, duration=20.0)
     z0 = np.array([10.0, 0.0, 0.0, 0.0, 0.0, 0.0])
-    a = film.simulate_film("slipping", 0.5, z0, setup, camera, seed=1)
+    a = fit.simulate_film("slipping", 0.5, z0, setup, camera, seed=1)
     assert_allclose(np.diff(a.t), 0.01)
     assert a.t[-1] == pytest.approx(20.0)
     exact = fit.positions("slipping", 0.5, z0, a.t, setup)
     err = np.column_stack([a.x, a.y]) - exact
     assert abs(err.std() / 2e-4 - 1) < 3 / math.sqrt(2 * err.size)
     assert abs(err.mean()) < 3 * 2e-4 / math.sqrt(err.size)
-    b = film.simulate_film("slipping", 0.5, z0, setup, camera, seed=1)
-    c = film.simulate_film("slipping", 0.5, z0, setup, camera, seed=2)
+    b = fit.simulate_film("slipping", 0.5, z0, setup, camera, seed=1)
+    c = fit.simulate_film("slipping", 0.5, z0, setup, camera, seed=2)
     assert np.array_equal(a.x, b.x)
     assert not np.array_equal(a.x, c.x)
     path = tmp_path / "film.csv"
-    header = film.synthetic_header("slipping", 0.5, z0, setup, camera, 1)
+    header = fit.synthetic_header("slipping", 0.5, z0, setup, camera, 1)
     film.write_film(path, a, header)
     text = path.read_text()
     assert text.startswith("# SYNTHETIC")
@@ -412,7 +412,7 @@ def test_simulated_film(tmp_path: Path) -> None:
     assert_allclose(back.t, a.t, rtol=1e-9)
     assert_allclose(back.x, a.x, rtol=1e-9)
     with pytest.raises(ValueError, match="no-slip constraint"):
-        film.simulate_film("rolling_resistance", 0.1, z0, setup, camera, seed=1)
+        fit.simulate_film("rolling_resistance", 0.1, z0, setup, camera, seed=1)
 
 
 def test_read_film_accepts_the_documented_variations(tmp_path: Path) -> None:
@@ -483,7 +483,7 @@ def rig_film(model: str, camera: film.Camera, seed: int, setup: film.Setup = RIG
     z0 = film.state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
     if model == "rolling_resistance":
         z0 = tt.no_slip_state(z0, setup.k)
-    return film.simulate_film(model, TRUE[model], z0, setup, camera, seed)
+    return fit.simulate_film(model, TRUE[model], z0, setup, camera, seed)
 
 
 def test_whiteness() -> None:
@@ -587,16 +587,16 @@ def test_coefficient_at_a_bound_is_a_limit() -> None:
     camera = film.Camera(fps=30.0, noise=3e-4, duration=6.0)
     z0 = START
     assert fit.predicted_stderr("slipping", 3000.0, z0, RIG, camera) / 3000.0 > 5
-    data = film.simulate_film("slipping", 3000.0, z0, RIG, camera, seed=1)
+    data = fit.simulate_film("slipping", 3000.0, z0, RIG, camera, seed=1)
     f = fit.fit_model(data, RIG, "slipping")
     assert f.at_bound
     assert f.bound == "upper"
     assert f.coefficient == pytest.approx(fit.BOUNDS["slipping"][1])
     assert 1.0 < f.limit < 3000.0
     # the RSS profile at the limit, the state refitted (linear in it): up by 1.645^2 s^2
-    tau, xy = fit._dimensionless(data, RIG)
+    tau, xy = fit.lsq._dimensionless(data, RIG)
     r = xy[:, 0] + 1j * xy[:, 1]
-    profile = float(fit._residual_sums("slipping", np.float64(f.limit), tau, r, RIG.k))
+    profile = float(fit.start._residual_sums("slipping", np.float64(f.limit), tau, r, RIG.k))
     s2 = f.rss / (f.n_observations - f.n_parameters)
     rise = RIG.radius**2 * profile - f.rss
     assert rise == pytest.approx(fit.Z95_ONE_SIDED**2 * s2, rel=0.05)
@@ -651,7 +651,7 @@ def test_penalty_alone_is_not_decisive(monkeypatch: pytest.MonkeyPatch) -> None:
     n, k_s, k_r = 20, 8, 6
     penalty = 4 + 2 * k_s * (k_s + 1) / (n - k_s - 1) - 2 * k_r * (k_r + 1) / (n - k_r - 1)
     assert penalty > 10
-    monkeypatch.setattr(fit, "MIN_DOF", 1)
+    monkeypatch.setattr(fit.lsq, "MIN_DOF", 1)
 
     def fake(rss: dict[str, float]):
         def fit_model(film_: film.Film, setup: film.Setup, model: str, **_: bool) -> fit.ModelFit:
@@ -664,13 +664,13 @@ def test_penalty_alone_is_not_decisive(monkeypatch: pytest.MonkeyPatch) -> None:
 
         return fit_model
 
-    monkeypatch.setattr(fit, "fit_model", fake({"slipping": 0.98, "rolling_resistance": 1.0}))
+    monkeypatch.setattr(fit.lsq, "fit_model", fake({"slipping": 0.98, "rolling_resistance": 1.0}))
     r = fit.fit_film(film.Film(np.arange(10.0), np.zeros(10), np.zeros(10)), RIG)
     assert r.selected == "rolling_resistance"
     assert r.aicc_difference > 10
     assert not r.decisive
     assert "penalty" in r.reason
-    monkeypatch.setattr(fit, "fit_model", fake({"slipping": 1.0, "rolling_resistance": 0.99}))
+    monkeypatch.setattr(fit.lsq, "fit_model", fake({"slipping": 1.0, "rolling_resistance": 0.99}))
     r = fit.fit_film(film.Film(np.arange(10.0), np.zeros(10), np.zeros(10)), RIG)
     assert r.selected == "rolling_resistance"
     assert r.decisive
@@ -712,7 +712,7 @@ def test_log_interval() -> None:
     """mu0_ci95 = exp(ln mu0 -+ 1.96 se(ln mu0)): positive and asymmetric even where the
     relative error is large (where value - 1.96 stderr < 0)."""
     camera = film.Camera(fps=30.0, noise=3e-4, duration=6.0)
-    data = film.simulate_film("slipping", 200.0, START, RIG, camera, seed=1)
+    data = fit.simulate_film("slipping", 200.0, START, RIG, camera, seed=1)
     f = fit.fit_model(data, RIG, "slipping")
     assert f.bound is None
     assert f.log_stderr > 0.6
@@ -724,7 +724,7 @@ def test_log_interval() -> None:
     out = fit.result_json(fit.fit_film(data, RIG), RIG, data)
     assert out["slipping"]["mu0_ci95"] == pytest.approx([lo, hi])
     assert out["slipping"]["mu0_relative_stderr"] == pytest.approx(f.stderr / f.coefficient)
-    from turntable.fitplot import value_with_error
+    from turntable.fit.plot import value_with_error
 
     text = value_with_error(f.coefficient, f.stderr, [lo, hi])
     assert "95 %" in text
@@ -753,7 +753,7 @@ def test_bound_is_reached_only_below_the_reliable_level() -> None:
         logs = [
             math.log(
                 fit.fit_model(
-                    film.simulate_film("slipping", mu0, START, RIG, camera, seed), RIG, "slipping"
+                    fit.simulate_film("slipping", mu0, START, RIG, camera, seed), RIG, "slipping"
                 ).coefficient
             )
             for seed in range(n)
@@ -786,7 +786,7 @@ def test_synthetic_flag(tmp_path: Path) -> None:
     data = rig_film("slipping", film.Camera(fps=30.0, noise=3e-4, duration=3.0), 0)
     assert data.synthetic
     marked, plain, lower = tmp_path / "a.csv", tmp_path / "b.csv", tmp_path / "c.csv"
-    film.write_film(marked, data, film.synthetic_header("slipping", 3.0, START, RIG, CAMERA, 0))
+    film.write_film(marked, data, fit.synthetic_header("slipping", 3.0, START, RIG, CAMERA, 0))
     film.write_film(plain, data, ["tracked by hand"])
     film.write_film(lower, data, ["not synthetic at all"])
     assert film.read_film(marked).synthetic

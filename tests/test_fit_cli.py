@@ -16,7 +16,9 @@ import pytest
 
 import turntable as tt
 from test_pipeline import clean_build, shared_tmp  # noqa: F401
-from turntable import cli, film, fit, fitplot
+from turntable import cli, film, fit
+from turntable._json import finite_or_none
+from turntable.fit import plot as fitplot
 
 ROOT = Path(__file__).resolve().parents[1]
 COMMAND = str(Path(sys.executable).with_name("turntable"))
@@ -74,7 +76,7 @@ def _unseen_film(tmp_path: Path, model: str, entropy: int) -> tuple[Path, dict]:
     if model == "rolling_resistance":
         z0 = tt.no_slip_state(z0, setup.k)
     camera = film.Camera(fps=float(rng.choice([60.0, 120.0])), noise=3e-4, duration=8.0)
-    data = film.simulate_film(model, c, z0, setup, camera, seed=int(rng.integers(2**31)))
+    data = fit.simulate_film(model, c, z0, setup, camera, seed=int(rng.integers(2**31)))
     t0 = float(rng.uniform(0.0, 100.0))
     lines = ["# tracked positions", "frame,y,quality,t,x"]
     lines += [
@@ -444,7 +446,7 @@ def test_the_readme_example_is_what_the_command_prints(
     name = Path(args[0]).stem
     (spec,) = [f for f in config["synthetic_film"]["films"] if f["name"] == name]
     rig = film.rig_from_config(config["film"])
-    data = film.simulate_film(
+    data = fit.simulate_film(
         spec["model"], spec["coefficient"], rig.state0, rig.setup, rig.camera, spec["seed"]
     )
     path = tmp_path / f"{name}.csv"
@@ -583,11 +585,11 @@ def _rig_file(
     z0 = film.state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], true)
     if model == "rolling_resistance":
         z0 = tt.no_slip_state(z0, true.k)
-    data = film.simulate_film(model, coefficient, z0, true, camera, seed)
+    data = fit.simulate_film(model, coefficient, z0, true, camera, seed)
     if flip:
         data = film.Film(data.t, data.x, -data.y)
     path = tmp_path / f"{model}-{seed}.csv"
-    comments = film.synthetic_header(model, coefficient, z0, true, camera, seed) if header else []
+    comments = fit.synthetic_header(model, coefficient, z0, true, camera, seed) if header else []
     film.write_film(path, data, comments)
     return path
 
@@ -738,7 +740,7 @@ def test_plot_that_cannot_be_drawn(
     tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """If drawing fails, the JSON is already on stdout; one line on stderr, exit status 1."""
-    from turntable import fitplot
+    from turntable.fit import plot as fitplot
 
     def broken(*_: object) -> None:
         raise TypeError("unsupported format string passed to NoneType.__format__")
@@ -758,11 +760,11 @@ def test_plot_that_cannot_be_drawn(
 def test_plot_draws_missing_values_and_limits(tmp_path: Path) -> None:
     """The drawing of a JSON with None values (no finite rolling fit, no AICc difference)
     and a coefficient reported as a limit: drawn, with the limit in the label."""
-    from turntable import fitplot
+    from turntable.fit import plot as fitplot
 
     camera = film.Camera(30.0, 3e-4, 6.0)
     data = film.read_film(_rig_file(tmp_path, "slipping", 3000.0, camera, 1))
-    out = cli._finite_json(fit.result_json(fit.fit_film(data, RIG), RIG, data))
+    out = finite_or_none(fit.result_json(fit.fit_film(data, RIG), RIG, data))
     assert out["slipping"]["mu0"] is None
     out["rolling_resistance"] = {
         key: value for key, value in out["rolling_resistance"].items() if "limit" not in key

@@ -1,10 +1,9 @@
 """The rolling-resistance comparison model (`turntable.rolling`).
 
 References: eigenvalues and matrix exponential at 50 digits of the 4x4 matrix
-read off the constrained 3-D Newton-Euler equations (`turntable.reference`:
-``rolling_spectrum``, ``rolling_solution``, ``rolling_equal_decay_delta``, and
-``rolling_equal_power_delta`` from a high-precision eigenvector of L; here under
-their short names ``ref.spectrum``, ...), and a direct numerical integration of
+read off the constrained 3-D Newton-Euler equations (`turntable.reference.rolling`:
+``spectrum``, ``solution``, ``equal_decay_delta``, and ``equal_power_delta`` from a
+high-precision eigenvector of L), and a direct numerical integration of
 those equations (`rolling.newton_euler`, DOP853).
 """
 

@@ -214,7 +214,7 @@ MUTANTS = [
         "tolerances of the trajectory.spiral check loosened a millionfold",
         (
             (
-                "claims/_checks_solution.py",
+                "claims/_checks_trajectory.py",
                 '"max_growth_rate_error_rel": 1e-6,\n        "max_angular_rate_error_rel": 1e-9,',
                 '"max_growth_rate_error_rel": 1.0,\n        "max_angular_rate_error_rel": 1e-3,',
                 1,
@@ -228,7 +228,7 @@ MUTANTS = [
         "only the growth-rate tolerance of the trajectory.spiral check loosened (1e-6 -> 1)",
         (
             (
-                "claims/_checks_solution.py",
+                "claims/_checks_trajectory.py",
                 '"max_growth_rate_error_rel": 1e-6,',
                 '"max_growth_rate_error_rel": 1.0,',
                 1,
@@ -242,7 +242,7 @@ MUTANTS = [
         "only the angular-rate tolerance of the trajectory.spiral check loosened (1e-9 -> 1e-3)",
         (
             (
-                "claims/_checks_solution.py",
+                "claims/_checks_trajectory.py",
                 '"max_angular_rate_error_rel": 1e-9,',
                 '"max_angular_rate_error_rel": 1e-3,',
                 1,
@@ -256,7 +256,7 @@ MUTANTS = [
         "spectrum.unstable_focus accepts alpha1 > -1 instead of alpha1 > 0",
         (
             (
-                "claims/_checks_spectrum.py",
+                "claims/_checks_stability.py",
                 '"min_alpha1": {">": 0.0},',
                 '"min_alpha1": {">": -1.0},',
                 1,
@@ -270,7 +270,7 @@ MUTANTS = [
         "trajectory.untwisting_slows: growth per turn decreasing somewhere instead of everywhere",
         (
             (
-                "claims/_checks_solution.py",
+                "claims/_checks_trajectory.py",
                 "per_turn_monotone and bool(np.all(np.diff(per_turn) < 0))",
                 "per_turn_monotone and bool(np.any(np.diff(per_turn) < 0))",
                 1,
@@ -284,7 +284,7 @@ MUTANTS = [
         "solution.damping_ratio accepts |alpha2|/beta > 1/2 instead of > 1",
         (
             (
-                "claims/_checks_solution.py",
+                "claims/_checks_damping.py",
                 '"min_ratio_alpha2_over_beta": {">": 1.0},',
                 '"min_ratio_alpha2_over_beta": {">": 0.5},',
                 1,
@@ -335,7 +335,7 @@ MUTANTS = [
         "sigma_g = 4 delta q / (A (k + 1 + q)) instead of (k + 2 + q) (rolling spectrum)",
         (
             (
-                "rolling.py",
+                "_rolling_spectrum.py",
                 "sigma_g = 4.0 * d * qh / (a * (k + 2.0 + q))",
                 "sigma_g = 4.0 * d * qh / (a * (k + 1.0 + q))",
                 1,
@@ -347,7 +347,7 @@ MUTANTS = [
         "nu_g = (k + q) / (2 (k + 2)) instead of / (2 (k + 1)) (rolling spectrum)",
         (
             (
-                "rolling.py",
+                "_rolling_spectrum.py",
                 "nu_g = (k + q) / (2.0 * (k + 1.0))",
                 "nu_g = (k + q) / (2.0 * (k + 2.0))",
                 1,
@@ -359,7 +359,7 @@ MUTANTS = [
         "the centre's root turns the other way: nu_c = +4 delta^2 / (A (q + k))",
         (
             (
-                "rolling.py",
+                "_rolling_spectrum.py",
                 "nu_c = -4.0 * d * d / (a * (q + k))",
                 "nu_c = 4.0 * d * d / (a * (q + k))",
                 1,
@@ -394,7 +394,7 @@ MUTANTS = [
         "(k + 1) alpha1 in equal_power_delta and own_spin_power_delta",
         (
             (
-                "rolling.py",
+                "_rolling_match.py",
                 "num = np.hypot((k + 1.0) * alpha1, y)",
                 "num = np.hypot(k * alpha1, y)",
                 2,
@@ -407,7 +407,7 @@ MUTANTS = [
         "-i lambda_+ r / k instead of the rolling spin r + i v on the same path",
         (
             (
-                "rolling.py",
+                "_rolling_match.py",
                 "den = k * np.hypot(1.0 - beta, alpha1)",
                 "den = beta * np.hypot(1.0, alpha1 / beta)",
                 1,
@@ -420,7 +420,7 @@ MUTANTS = [
         "instead of |1 + i lambda_+| in equal_power_delta",
         (
             (
-                "rolling.py",
+                "_rolling_match.py",
                 "den = k * np.hypot(1.0 - beta, alpha1)",
                 "den = k * np.hypot(1.0 + beta, alpha1)",
                 1,
@@ -462,7 +462,7 @@ MUTANTS = [
         "comparison.rolling_resistance claim: spectrum against 50 digits)",
         (
             (
-                "rolling.py",
+                "_rolling_spectrum.py",
                 "sigma_c = -(delta + p) / (2.0 * (k + 1.0))",
                 "sigma_c = -(delta + p) / (2.0 * (k + 2.0))",
                 1,
@@ -519,7 +519,7 @@ MUTANTS = [
         "comparison.rolling_resistance claim: delta_P against the eigenvector reference)",
         (
             (
-                "rolling.py",
+                "_rolling_match.py",
                 "den = k * np.hypot(1.0 - beta, alpha1)",
                 "den = beta * np.hypot(1.0, alpha1 / beta)",
                 1,
@@ -531,7 +531,7 @@ MUTANTS = [
     Mutant(
         "fit-coefficient-column",
         "the column d r / d ln c of the fit's Jacobian twice too large (standard errors halved)",
-        (("fit.py", "((up - down) / (2.0 * LOG_STEP))", "((up - down) / LOG_STEP)", 1),),
+        (("fit/parameters.py", "((up - down) / (2.0 * LOG_STEP))", "((up - down) / LOG_STEP)", 1),),
         FIT_TESTS,
     ),
     Mutant(
@@ -539,7 +539,7 @@ MUTANTS = [
         "standard error of a parameter without projecting out the others (the initial state)",
         (
             (
-                "fit.py",
+                "fit/parameters.py",
                 "norm = float(np.linalg.norm(j_i - rest @ coef))",
                 "norm = float(np.linalg.norm(j_i))",
                 1,
@@ -552,7 +552,7 @@ MUTANTS = [
         "the fit forgets Omega: tau = t - t0 instead of Omega (t - t0)",
         (
             (
-                "fit.py",
+                "fit/lsq.py",
                 "return setup.omega * t, xy / setup.radius",
                 "return t, xy / setup.radius",
                 1,
@@ -565,7 +565,7 @@ MUTANTS = [
         "delta_dim = delta m R Omega instead of delta m R^2 Omega",
         (
             (
-                "fit.py",
+                "fit/io.py",
                 '(1.0 if model == "slipping" else setup.radius**2)',
                 '(1.0 if model == "slipping" else setup.radius)',
                 1,
@@ -576,7 +576,7 @@ MUTANTS = [
     Mutant(
         "fit-expected-aic",
         "expected AIC difference without the penalty of the two extra parameters",
-        (("fit.py", "d = 2.0 * q + 2.0 * k_s", "d = q + 2.0 * k_s", 1),),
+        (("fit/design.py", "d = 2.0 * q + 2.0 * k_s", "d = q + 2.0 * k_s", 1),),
         FIT_TESTS,
     ),
 ]

@@ -39,6 +39,7 @@ import numpy as np
 
 from turntable import film as film_io
 from turntable import fit
+from turntable._json import finite_or_none
 
 #: The claims report ``turntable claims`` reads unless told another (written by ``make``).
 DEFAULT_CLAIMS_REPORT = "results/claims.json"
@@ -177,17 +178,6 @@ def _positive(option: str, value: float | None, unit: str) -> None:
         _fail(f"turntable fit: error: {option} must be a finite number > 0 ({unit}); got {value}")
 
 
-def _finite_json(value: Any) -> Any:
-    """``value`` with every non-finite float replaced by None (JSON has no inf or NaN)."""
-    if isinstance(value, float):
-        return value if math.isfinite(value) else None
-    if isinstance(value, dict):
-        return {k: _finite_json(v) for k, v in value.items()}
-    if isinstance(value, list | tuple):
-        return [_finite_json(v) for v in value]
-    return value
-
-
 def _warn(message: str) -> None:
     print(f"turntable fit: warning: {' '.join(message.split())}", file=sys.stderr)
 
@@ -274,14 +264,14 @@ def fit_command(args: argparse.Namespace) -> int:
         warnings.simplefilter("ignore", RuntimeWarning)
         result = fit.fit_film(data, setup, **options)
         check = fit.consistency(data, setup, result, **options)
-        out = _finite_json(
+        out = finite_or_none(
             fit.result_json(result, setup, data, args.mass, source=args.data, check=check)
         )
     _write_json(out)
     for message in out["warnings"]:
         _warn(message)
     if args.plot is not None:
-        from turntable import fitplot
+        from turntable.fit import plot as fitplot
 
         try:
             with warnings.catch_warnings(), np.errstate(all="ignore"):

@@ -1,4 +1,4 @@
-"""A filmed trajectory: the CSV file of tracked positions, and synthetic films.
+"""A filmed trajectory: the set-up, the camera, and the CSV file of tracked positions.
 
 A film is the position (x, y) of the ball's centre in the lab (non-rotating) frame at the
 times t of the frames, in metres and seconds.  The file is UTF-8 text with delimited
@@ -14,10 +14,9 @@ fields, as spreadsheets and tracking programs write it:
   simulated, not measured (`Film.synthetic`).
 
 `read_film` refuses anything else with a `FilmError` whose message names the file, the
-line and the column.  `simulate_film` makes a synthetic film from the exact solutions
-(`turntable.solve`, `turntable.rolling.solve`) plus Gaussian tracking noise, and
-`write_film` writes it with a header that marks it SYNTHETIC and gives the true
-parameters.
+line and the column.  `write_film` writes a film; synthetic films, with a header that marks
+them SYNTHETIC and gives the true parameters, come from `turntable.fit.simulate_film` and
+`turntable.fit.synthetic_header`.
 """
 
 from __future__ import annotations
@@ -41,7 +40,8 @@ COLUMNS = ("t", "x", "y")
 #: Field delimiters, in the order the header is searched for them: the first one the
 #: header line holds is the file's.
 DELIMITERS = (",", "\t", ";")
-#: Word of a comment line that marks a film as simulated (`synthetic_header` writes it).
+#: Word of a comment line that marks a film as simulated (`turntable.fit.synthetic_header`
+#: writes it).
 SYNTHETIC_MARK = "SYNTHETIC"
 _MARK = re.compile(rf"\b{SYNTHETIC_MARK}\b")
 
@@ -61,7 +61,7 @@ class Film(NamedTuple):
         Position of the centre in m, shape (n,).
     synthetic : bool
         Whether the film is marked as simulated: `read_film` sets it for a file with a
-        comment line containing the word SYNTHETIC (as `synthetic_header` writes).
+        comment line containing the word SYNTHETIC (as `turntable.fit.synthetic_header` writes).
     """
 
     t: NDArray[np.float64]
@@ -360,53 +360,6 @@ def read_film(
     return Film(*(np.array(columns[c]) for c in COLUMNS), synthetic=synthetic)
 
 
-# --------------------------------------------------------------------------- synthetic films
-def simulate_film(
-    model: str,
-    coefficient: float,
-    state0: ArrayLike,
-    setup: Setup,
-    camera: Camera,
-    seed: int,
-) -> Film:
-    """Return a synthetic film: the exact motion of one model plus Gaussian tracking noise.
-
-    Parameters
-    ----------
-    model : {"slipping", "rolling_resistance"}
-        The slipping ball of the paper (`turntable.solve`, coefficient mu0) or the ball
-        rolling without slipping with rolling resistance (`turntable.rolling.solve`,
-        coefficient delta).
-    coefficient : float
-        mu0 / (m Omega) or delta / (m R^2 Omega), dimensionless, > 0.
-    state0 : array_like
-        Dimensionless state (x, y, vx, vy, wx, wy) at t = 0 (see `state_from_si`); for
-        the rolling model it must satisfy the no-slip constraint.
-    setup : Setup
-        Ball and turntable.
-    camera : Camera
-        Frame rate, noise and duration.
-    seed : int
-        Seed of the noise (`numpy.random.default_rng`).
-
-    Returns
-    -------
-    Film
-        Frames at t = i / fps; x, y = R (x, y)(Omega t) + axis + noise, each coordinate
-        with independent N(0, noise^2) errors; marked ``synthetic``.
-    """
-    from turntable.fit import positions
-
-    t = frame_times(camera)
-    noise = float(camera.noise)
-    if not (math.isfinite(noise) and noise >= 0):
-        raise ValueError(f"noise must be a finite number >= 0; got {camera.noise!r}")
-    xy = positions(model, coefficient, state0, t, setup)
-    rng = np.random.default_rng(seed)
-    xy = xy + noise * rng.standard_normal(xy.shape)
-    return Film(t, xy[:, 0], xy[:, 1], synthetic=True)
-
-
 def write_film(
     path: str | os.PathLike[str], film: Film, comments: Sequence[str] = (), digits: int = 10
 ) -> None:
@@ -438,29 +391,3 @@ def write_film(
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
-
-
-def synthetic_header(
-    model: str,
-    coefficient: float,
-    state0: ArrayLike,
-    setup: Setup,
-    camera: Camera,
-    seed: int,
-) -> list[str]:
-    """Return the comment lines that mark a film SYNTHETIC and give its true parameters."""
-    from turntable.fit import COEFFICIENT
-
-    z0 = _validate.state("state0", state0)
-    si = state_to_si(z0, setup)
-    return [
-        "SYNTHETIC DATA: simulated by turntable.film.simulate_film, not measured.",
-        f"truth: model = {model}, {COEFFICIENT[model]} = {coefficient!r} (dimensionless)",
-        f"truth: k = {setup.k!r}, radius_m = {setup.radius!r}, omega_rad_s = {setup.omega!r}, "
-        f"axis_m = {list(setup.axis)!r}",
-        f"truth: state0 = {[float(v) for v in z0]!r} (dimensionless, at t = 0); "
-        f"position_m = {si['position_m']!r}, velocity_m_s = {si['velocity_m_s']!r}, "
-        f"spin_rad_s = {si['spin_rad_s']!r}",
-        f"camera: fps = {camera.fps!r}, noise_m = {camera.noise!r} (per coordinate), "
-        f"duration_s = {camera.duration!r}, seed = {seed}",
-    ]

@@ -6,73 +6,8 @@ rolling proportional to its angular velocity (ref. [2] of the paper).  This
 module is that second system, in the paper's dimensionless units (length R,
 time 1/Omega, mass m), with z = (x, y, vx, vy, wx, wy) as elsewhere.
 
-Model
------
-Contact at -gamma from the centre; the no-slip constraint (u of the paper
-set to zero) and the Newton-Euler equations with the reaction force F as
-Lagrange multiplier and the resistance torque M::
-
-    u = v + gamma x w - gamma x r = 0,                       (R1)
-    dv/dt = F - g gamma,   k dw/dt = (-gamma) x F + M,        (R2)
-    M = -delta w_h,   delta = delta_dim / (m R^2 Omega).      (R3)
-
-Which components of w the torque acts on: the horizontal ones, w_h
-(resistance to rolling proper; resistance to pivoting is a different
-mechanism).  The choice does not change the planar motion: the vertical spin
-wz enters neither (R1) (gamma x w has no wz) nor the horizontal part of (R2)
-(the vertical component of M gives gamma x M = 0), so with M = -delta w (all
-three components, inertial frame) or M = -delta (w - gamma) (relative to the
-plane) only wz evolves differently (it decays like exp(-delta t / k), or
-relaxes to the plane's spin 1, instead of staying constant).  `newton_euler`
-integrates all three variants; the tests compare them.
-
-Linear equations
-----------------
-Differentiating (R1) and eliminating F with (R2) gives, in complex form
-(r = x + i y, v = vx + i vy, w = wx + i wy; gamma x acts as i)::
-
-    w = r + i v,
-    (k + 1) dv/dt = (i k - delta) v + i delta r,                (R4)
-
-i.e. F_h = (k gamma x v + delta gamma x w) / (k + 1), a real linear system
-of dimension four on (x, y, vx, vy) (`system_matrix`); w follows from (R1).
-
-Eigenvalues
------------
-(R4) has the characteristic polynomial (k+1) lambda^2 + (delta - i k) lambda
-- i delta, with roots lambda_g (growing) and lambda_c (the centre's), and the
-real system has these and their conjugates.  With S = (delta + i k)^2
-+ 4 i delta = (p + i q)^2 (p, q > 0, p q = delta (k + 2)) and
-A = |S| + delta^2 + k^2::
-
-    lambda_g = sigma_g + i nu_g,  lambda_c = sigma_c + i nu_c,
-    sigma_g = 4 delta q / (A (k + 2 + q))       (> 0: growth rate)
-    nu_g    = (k + q) / (2 (k + 1))             (rate of turning)
-    sigma_c = -(delta + p) / (2 (k + 1))        (< 0: centre's decay)
-    nu_c    = -4 delta^2 / (A (q + k))
-
-These follow from lambda = ((p - delta) + i (k + q)) / (2 (k + 1)) and
-((-delta - p) + i (k - q)) / (2 (k + 1)) with the identities
-q^2 - k^2 = p^2 - delta^2 = (|S| - delta^2 - k^2) / 2
-= 8 delta^2 (k + 1) / A, so no step subtracts nearly equal numbers.  Limits:
-delta -> 0: lambda_g = i k/(k+1) + delta/(k (k+1)) + O(delta^2),
-lambda_c = -delta/k + O(delta^2); delta -> infinity: lambda_g -> i (the ball
-is carried round with the plane), sigma_g ~ 1/delta, lambda_c ~ -(delta + i)/(k+1).
-No eigenvalue is on the imaginary axis for delta > 0 (on lambda = i y the
-imaginary part of the polynomial is delta (y - 1) and the real part at
-y = 1 is -1), so sigma_g > 0 > sigma_c for every delta > 0 and k > 0.
-
-Solution, centre
-----------------
-r(t) = A_g e^{lambda_g t} + A_c e^{lambda_c t} with
-A_g = (v0 - lambda_c r0) / (lambda_g - lambda_c),
-A_c = (lambda_g r0 - v0) / (lambda_g - lambda_c), v = dr/dt, w = r + i v.
-The first term is the spiral: radius growing like e^{sigma_g t}, i.e. by
-e^{2 pi sigma_g / nu_g} per turn.  Its centre is the second term,
-r_c(t) = A_c e^{lambda_c t}: unlike the slipping model (fixed centre
-(x0, y0) of (2.8)) it MOVES, spiralling into the turntable's axis at the
-rate |sigma_c| (for small delta, |sigma_c| / sigma_g -> k + 1).  The only
-equilibrium is the ball at rest on the axis.
+The derivation (the model (R1)-(R3), the linear equations (R4), the eigenvalues in closed
+form and the moving centre of the spiral) is in docs/theory.md.
 """
 
 from __future__ import annotations
@@ -83,8 +18,15 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from turntable import _validate
+from turntable._rolling_match import (
+    equal_decay_delta,
+    equal_power_delta,
+    own_spin_power_delta,
+    power_rolling,
+    power_slipping,
+)
+from turntable._rolling_spectrum import RollingSpectrum, _spectrum_rolling, system_matrix
 from turntable.solution import slip_velocity
-from turntable.spectrum import _spectrum
 
 __all__ = [
     "COMPARISONS",
@@ -117,83 +59,13 @@ __all__ = [
 
 GAMMA = np.array([0.0, 0.0, 1.0])
 
+
 #: Largest slip |u| accepted by `solve`, relative to 1 + max |z0|.
 SLIP_TOLERANCE = 1e-10
 
+
 #: The torque variants of `newton_euler`: which components of w the torque acts on.
 TORQUES = ("horizontal", "full", "relative")
-
-
-def system_matrix(delta: float, k: float) -> NDArray[np.float64]:
-    """Return the 4x4 matrix of the rolling model on (x, y, vx, vy).
-
-    Parameters
-    ----------
-    delta : float
-        Dimensionless rolling-resistance coefficient delta_dim / (m R^2 Omega) > 0.
-    k : float
-        Inertia ratio I / (m R^2) > 0.
-
-    Returns
-    -------
-    numpy.ndarray
-        M of d(x, y, vx, vy)/dt = M (x, y, vx, vy), shape (4, 4).
-
-    Notes
-    -----
-    Equation (R4) of the module docstring in real form::
-
-        M = [[0, I], [delta J / (k + 1), (k J - delta I) / (k + 1)]]
-
-    with J = [[0, -1], [1, 0]]; w = r + J v follows from the constraint.
-    """
-    delta = _validate.positive_scalar("delta", delta)
-    k = _validate.positive_scalar("k", k)
-    i2 = np.eye(2)
-    j = np.array([[0.0, -1.0], [1.0, 0.0]])
-    return np.block(
-        [[np.zeros((2, 2)), i2], [delta * j / (k + 1.0), (k * j - delta * i2) / (k + 1.0)]]
-    )
-
-
-class RollingSpectrum(NamedTuple):
-    """Real and imaginary parts of the two roots of the rolling model.
-
-    Attributes
-    ----------
-    sigma_g, nu_g : numpy.ndarray
-        Growth rate (> 0) and rate of turning of the spiral, lambda_g = sigma_g + i nu_g.
-    sigma_c, nu_c : numpy.ndarray
-        Decay rate (< 0) and rate of turning of the spiral's centre,
-        lambda_c = sigma_c + i nu_c.
-    """
-
-    sigma_g: NDArray[np.float64]
-    nu_g: NDArray[np.float64]
-    sigma_c: NDArray[np.float64]
-    nu_c: NDArray[np.float64]
-
-
-def _spectrum_rolling(delta: NDArray[np.float64], k: NDArray[np.float64]) -> RollingSpectrum:
-    """`spectrum` on validated, broadcast arguments (scaled so nothing overflows)."""
-    c = np.maximum(delta, k)
-    d, kh = delta / c, k / c
-    re_s = (d - kh) * (d + kh)
-    im_s = 2.0 * d * (kh + 2.0 / c)
-    abs_s = np.hypot(re_s, im_s)
-    big = delta > k
-    with np.errstate(divide="ignore", invalid="ignore"):
-        p_big = np.sqrt((abs_s + re_s) / 2.0)
-        q_small = np.sqrt((abs_s - re_s) / 2.0)
-        ph = np.where(big, p_big, im_s / (2.0 * q_small))
-        qh = np.where(big, im_s / (2.0 * p_big), q_small)
-    a = abs_s + d * d + kh * kh
-    p, q = ph * c, qh * c
-    sigma_g = 4.0 * d * qh / (a * (k + 2.0 + q))
-    nu_g = (k + q) / (2.0 * (k + 1.0))
-    sigma_c = -(delta + p) / (2.0 * (k + 1.0))
-    nu_c = -4.0 * d * d / (a * (q + k))
-    return RollingSpectrum(sigma_g, nu_g, sigma_c, nu_c)
 
 
 def spectrum(delta: ArrayLike, k: ArrayLike) -> RollingSpectrum:
@@ -448,174 +320,6 @@ def spiral_centre(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> NDArra
     axis at the rate |sigma_c| (`centre_decay_rate`).
     """
     return modal_terms(z0, t, delta, k).centre[:, :2]
-
-
-def power_rolling(z: ArrayLike, delta: float) -> NDArray[np.float64]:
-    """Return the power dissipated by the rolling-resistance torque, delta |w_h|^2.
-
-    Notes
-    -----
-    (R3): -M . w = delta (wx^2 + wy^2), in units m R^2 Omega^3.
-    """
-    z = _validate.states("z", z)
-    delta = _validate.positive_scalar("delta", delta)
-    return delta * (z[..., 4] ** 2 + z[..., 5] ** 2)
-
-
-def power_slipping(z: ArrayLike, mu0: float) -> NDArray[np.float64]:
-    """Return the power dissipated by viscous slipping friction, mu0 |u|^2.
-
-    Notes
-    -----
-    Section 1 of the paper: F = -mu0 u at the contact point, which slides
-    with u relative to the plane; in units m R^2 Omega^3.
-    """
-    z = _validate.states("z", z)
-    mu0 = _validate.positive_scalar("mu0", mu0)
-    u = slip_velocity(z)
-    return mu0 * (u[..., 0] ** 2 + u[..., 1] ** 2)
-
-
-def _slipping_mode(mu0: ArrayLike, k: ArrayLike) -> tuple[NDArray[np.float64], ...]:
-    """Validated mu0, k and, of lambda_+ = alpha1 + i beta, the parts that enter the powers.
-
-    Returns mu0, k, alpha1, beta and y = (k + 1) beta - k, broadcast.  alpha1 = beta b /
-    (a + 1) (as (a - 1) / b = b / (a + 1)); y = -2 k (h - 1) / (s (2 + s)) with
-    s = sqrt(2 (h + 1)), h - 1 = eps (eps / (h + 1)), h = sqrt(1 + eps^2): no step
-    cancels, overflows or underflows for any mu0 at which `turntable.spectrum` is finite.
-    """
-    mu0 = _validate.positive("mu0", mu0)
-    k = _validate.positive("k", k)
-    mu0, k = np.broadcast_arrays(mu0, k)
-    with np.errstate(over="ignore"):  # alpha1 of _spectrum (not used) overflows below 1e-206
-        sp = _spectrum(mu0, k)
-    h = np.hypot(1.0, sp.eps)
-    s = np.sqrt(2.0 * (h + 1.0))
-    alpha1 = sp.beta * (sp.b / (sp.a + 1.0))
-    y = -2.0 * k * (sp.eps * (sp.eps / (h + 1.0))) / (s * (2.0 + s))
-    return mu0, k, alpha1, sp.beta, y
-
-
-def equal_power_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
-    """Return delta at which rolling along the slipping path dissipates the slipping power.
-
-    Parameters
-    ----------
-    mu0, k : float or array_like
-        Slipping friction coefficient and inertia ratio, > 0.
-
-    Returns
-    -------
-    numpy.ndarray
-        delta_P = mu0 |(k + 1) lambda_+ - i k|^2 / (k^2 |1 + i lambda_+|^2).
-
-    Notes
-    -----
-    Comparison (b), equal mean dissipated power on the same motion: the same path
-    of the centre, each mechanism with its own kinematics.  The path is the
-    slipping model's spiral about the turntable's axis, its growing mode
-    r = rho e^{lambda_+ t} (lambda_+ = alpha1 + i beta of (2.5)).
-
-    - Slipping: the mode has c = v - i k w = 0, so v = lambda_+ r and
-      w = -i lambda_+ r / k; the contact point slides with
-      u = v + i w - i r = ((k + 1) lambda_+ - i k) r / k and friction dissipates
-      mu0 |u|^2.
-    - Rolling along the same path: the no-slip constraint (R1) fixes the spin,
-      w = r + i v = (1 + i lambda_+) r, and the torque (R3) dissipates
-      delta |w|^2.
-
-    Both powers are |r|^2 = |rho|^2 e^{2 alpha1 t} times a constant, so they
-    are equal at every instant, hence on average, for::
-
-        delta_P = mu0 |(k + 1) lambda_+ - i k|^2 / (k^2 |1 + i lambda_+|^2).
-
-    Evaluated as (sqrt(mu0) |(k + 1) alpha1 + i y| / (k |(1 - beta) + i alpha1|))^2
-    with y = (k + 1) beta - k written without cancellation; 1 - beta > 1 / (k + 1)
-    does not cancel either (beta < k / (k + 1)).  Limits: delta_P / mu0 -> 1 as
-    mu0 -> 0 (lambda_+ ~ sqrt(i mu0), so u ~ -i r and w ~ r: at small mu0 the
-    ball slides with the plane's speed under it and would roll with unit spin);
-    delta_P ~ k^4 / (mu0 (k + 1)^2) as mu0 -> infinity, where the slipping
-    motion becomes the no-slip one and both spins agree.  `own_spin_power_delta`
-    is the alternative that charges the torque on the slipping ball's own spin.
-    """
-    mu0, k, alpha1, beta, y = _slipping_mode(mu0, k)
-    num = np.hypot((k + 1.0) * alpha1, y)
-    den = k * np.hypot(1.0 - beta, alpha1)
-    return (np.sqrt(mu0) * num / den) ** 2
-
-
-def own_spin_power_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
-    """Return delta that matches the slipping power with the torque on the slipping spin.
-
-    Parameters
-    ----------
-    mu0, k : float or array_like
-        Slipping friction coefficient and inertia ratio, > 0.
-
-    Returns
-    -------
-    numpy.ndarray
-        delta_S = mu0 |(k + 1) lambda_+ - i k|^2 / |lambda_+|^2.
-
-    Notes
-    -----
-    NOT comparison (b): the alternative reading it replaces, kept so that the
-    difference can be shown.  On the slipping spiral about the axis it charges the
-    rolling-resistance power delta |w|^2 on the slipping ball's own spin
-    w = -i lambda_+ r / k, which a ball rolling along that path cannot have (its
-    spin is w = r + i v).  mu0 |u|^2 = delta_S |w|^2 at every instant;
-    delta_S -> k^2 as mu0 -> 0 (the slipping spin vanishes like sqrt(mu0) while
-    the slip does not), delta_S ~ k^4 / (mu0 (k + 1)^2) as mu0 -> infinity (as
-    `equal_power_delta`).  Same evaluation as `equal_power_delta`, with
-    |lambda_+| = beta |1 + i alpha1 / beta|.
-    """
-    mu0, k, alpha1, beta, y = _slipping_mode(mu0, k)
-    num = np.hypot((k + 1.0) * alpha1, y)
-    return (np.sqrt(mu0) * num / (beta * np.hypot(1.0, alpha1 / beta))) ** 2
-
-
-def equal_decay_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
-    """Return delta at which the rolling centre decays at the slipping |alpha2|.
-
-    Parameters
-    ----------
-    mu0, k : float or array_like
-        Slipping friction coefficient and inertia ratio, > 0.
-
-    Returns
-    -------
-    numpy.ndarray
-        The unique delta with |sigma_c(delta, k)| = |alpha2(mu0, k)|.
-
-    Notes
-    -----
-    Comparison (c): equal decay rates of the non-growing parts (z- of (2.7)
-    and the moving centre).  |sigma_c| = (delta + p) / (2 (k + 1)) increases
-    strictly with delta and lies between delta / (2 (k + 1)) and delta / k,
-    so the root lies in [k |alpha2|, 2 (k + 1) |alpha2|].  The lower end is the
-    root's limit for small mu0 (where |sigma_c| = delta / k (1 - O(delta))), so
-    in doubles it can be the root itself: Brent's method brackets it in
-    [k |alpha2| / 2, 4 (k + 1) |alpha2|], where the function changes sign by at
-    least a half at either end, and finds it to a relative 1e-15.  Large mu0:
-    delta ~ mu0 (k+1)^2 / k; small mu0: delta ~ k |alpha2| ~ k sqrt(mu0 / 2).
-    """
-    from scipy.optimize import brentq
-
-    mu0 = _validate.positive("mu0", mu0)
-    k = _validate.positive("k", k)
-    mu0, k = np.broadcast_arrays(mu0, k)
-    with np.errstate(over="ignore"):  # alpha1 of _spectrum (not used) overflows below 1e-206
-        target = -_spectrum(mu0, k).alpha2
-    out = np.empty(mu0.shape)
-    for idx in np.ndindex(mu0.shape):
-        kk, a2 = np.float64(k[idx]), float(target[idx])
-
-        def f(dl: float, kk: np.float64 = kk, a2: float = a2) -> float:
-            return float(-_spectrum_rolling(np.float64(dl), kk).sigma_c) / a2 - 1.0
-
-        lo, hi = 0.5 * float(kk) * a2, 4.0 * (float(kk) + 1.0) * a2
-        out[idx] = brentq(f, lo, hi, xtol=1e-300, rtol=1e-15)
-    return out
 
 
 #: The comparisons of the two mechanisms: (a) delta = mu0, (b) equal dissipated power on the

@@ -58,10 +58,15 @@ from turntable.claims._core import (
 #: The modules of checks, in the order of the paper; each registers its claims in that order.
 CHECK_MODULES: tuple[str, ...] = (
     "_checks_intro",
+    "_checks_model",
     "_checks_spectrum",
+    "_checks_stability",
     "_checks_solution",
+    "_checks_damping",
+    "_checks_trajectory",
     "_checks_comparison",
     "_checks_limit",
+    "_checks_realization",
 )
 
 for _name in CHECK_MODULES:

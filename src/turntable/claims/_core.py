@@ -10,10 +10,11 @@ from importlib import resources
 from types import MappingProxyType
 from typing import Any, Literal
 
-import jsonschema
 import numpy as np
 import yaml
 from numpy.typing import NDArray
+
+from turntable._json import validator
 
 Verdict = Literal["confirmed", "refined", "corrected", "undecidable", "failed"]
 
@@ -43,17 +44,6 @@ def _defaults() -> dict[str, Any]:
 #: Parameters of the checks with the values used when a key is not given: the ``default``
 #: of each property of the schema (read-only view; edit the schema to change one).
 DEFAULT_PARAMS: Mapping[str, Any] = MappingProxyType(_defaults())
-
-
-def _is_int(checker: Any, value: Any) -> bool:
-    # JSON Schema counts 400.0 as an integer; a count must be a Python int.
-    return isinstance(value, int) and not isinstance(value, bool)
-
-
-_VALIDATOR = jsonschema.validators.extend(
-    jsonschema.Draft202012Validator,
-    type_checker=jsonschema.Draft202012Validator.TYPE_CHECKER.redefine("integer", _is_int),
-)
 
 
 def _property_type(prop: Mapping[str, Any]) -> str:
@@ -97,7 +87,7 @@ def resolve_params(params: Mapping[str, Any] | None = None) -> dict[str, Any]:
     """
     p = {**_defaults(), **dict(params or {})}
     schema = params_schema()
-    errors = sorted(_VALIDATOR(schema).iter_errors(p), key=lambda e: list(e.absolute_path))
+    errors = sorted(validator(schema).iter_errors(p), key=lambda e: list(e.absolute_path))
     if errors:
         err = errors[0]
         path = "".join(f"[{x!r}]" for x in err.absolute_path) or ""

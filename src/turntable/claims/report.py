@@ -18,7 +18,6 @@ import turntable
 from turntable import reference
 from turntable.claims import VERDICTS, evaluate_all, resolve_params
 from turntable.claims._core import clean, split_bound
-from turntable.provenance import git_state
 
 #: What each verdict means, in the words of the report (README and article say the same).
 VERDICT_MEANINGS: dict[str, str] = {
@@ -33,11 +32,6 @@ VERDICT_MEANINGS: dict[str, str] = {
 
 #: Version of the layout of ``claims.json`` (2: each claim names its ``decisive`` value).
 SCHEMA_VERSION = 2
-
-
-def git_commit(cwd: str | Path | None = None) -> str:
-    """Return ``git rev-parse HEAD`` in ``cwd``, or ``"unknown"`` outside a git checkout."""
-    return git_state(cwd)[0]
 
 
 #: The two sources of a claim: the paper's statements and the reproduction's additions.
@@ -109,7 +103,7 @@ def build_report(
             "reference_digits": {
                 "eigenvalues": reference.DPS,
                 "characteristic_roots": reference.ROOTS_DPS,
-                "rolling": reference.ROLLING_DPS,
+                "rolling": reference.rolling.DPS,
             },
             "order": [r["id"] for r in records],
             "summary": counts,

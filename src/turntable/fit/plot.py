@@ -19,7 +19,8 @@ from typing import Any
 import numpy as np
 
 from turntable.film import Film
-from turntable.fit import COEFFICIENT, MODELS, fitted_positions
+from turntable.fit.io import fitted_positions
+from turntable.fit.models import COEFFICIENT, MODELS
 
 #: Relative standard error above which a coefficient is written with its 95 % interval
 #: instead of "value ± stderr" (which would suggest negative values).

@@ -1,0 +1,185 @@
+"""The rolling coefficient delta matched to a slipping mu0: equal power, equal decay.
+
+The powers dissipated by the two frictions, the delta at which rolling along the slipping
+path dissipates the slipping power (`equal_power_delta`, with the ball's own spin:
+`own_spin_power_delta`), and the delta of equal decay of the non-growing part
+(`equal_decay_delta`).  Public through `turntable.rolling`.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from turntable import _validate
+from turntable._rolling_spectrum import _spectrum_rolling
+from turntable.solution import slip_velocity
+from turntable.spectrum import _spectrum
+
+
+def power_rolling(z: ArrayLike, delta: float) -> NDArray[np.float64]:
+    """Return the power dissipated by the rolling-resistance torque, delta |w_h|^2.
+
+    Notes
+    -----
+    (R3): -M . w = delta (wx^2 + wy^2), in units m R^2 Omega^3.
+    """
+    z = _validate.states("z", z)
+    delta = _validate.positive_scalar("delta", delta)
+    return delta * (z[..., 4] ** 2 + z[..., 5] ** 2)
+
+
+def power_slipping(z: ArrayLike, mu0: float) -> NDArray[np.float64]:
+    """Return the power dissipated by viscous slipping friction, mu0 |u|^2.
+
+    Notes
+    -----
+    Section 1 of the paper: F = -mu0 u at the contact point, which slides
+    with u relative to the plane; in units m R^2 Omega^3.
+    """
+    z = _validate.states("z", z)
+    mu0 = _validate.positive_scalar("mu0", mu0)
+    u = slip_velocity(z)
+    return mu0 * (u[..., 0] ** 2 + u[..., 1] ** 2)
+
+
+def _slipping_mode(mu0: ArrayLike, k: ArrayLike) -> tuple[NDArray[np.float64], ...]:
+    """Validated mu0, k and, of lambda_+ = alpha1 + i beta, the parts that enter the powers.
+
+    Returns mu0, k, alpha1, beta and y = (k + 1) beta - k, broadcast.  alpha1 = beta b /
+    (a + 1) (as (a - 1) / b = b / (a + 1)); y = -2 k (h - 1) / (s (2 + s)) with
+    s = sqrt(2 (h + 1)), h - 1 = eps (eps / (h + 1)), h = sqrt(1 + eps^2): no step
+    cancels, overflows or underflows for any mu0 at which `turntable.spectrum` is finite.
+    """
+    mu0 = _validate.positive("mu0", mu0)
+    k = _validate.positive("k", k)
+    mu0, k = np.broadcast_arrays(mu0, k)
+    with np.errstate(over="ignore"):  # alpha1 of _spectrum (not used) overflows below 1e-206
+        sp = _spectrum(mu0, k)
+    h = np.hypot(1.0, sp.eps)
+    s = np.sqrt(2.0 * (h + 1.0))
+    alpha1 = sp.beta * (sp.b / (sp.a + 1.0))
+    y = -2.0 * k * (sp.eps * (sp.eps / (h + 1.0))) / (s * (2.0 + s))
+    return mu0, k, alpha1, sp.beta, y
+
+
+def equal_power_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
+    """Return delta at which rolling along the slipping path dissipates the slipping power.
+
+    Parameters
+    ----------
+    mu0, k : float or array_like
+        Slipping friction coefficient and inertia ratio, > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        delta_P = mu0 |(k + 1) lambda_+ - i k|^2 / (k^2 |1 + i lambda_+|^2).
+
+    Notes
+    -----
+    Comparison (b), equal mean dissipated power on the same motion: the same path
+    of the centre, each mechanism with its own kinematics.  The path is the
+    slipping model's spiral about the turntable's axis, its growing mode
+    r = rho e^{lambda_+ t} (lambda_+ = alpha1 + i beta of (2.5)).
+
+    - Slipping: the mode has c = v - i k w = 0, so v = lambda_+ r and
+      w = -i lambda_+ r / k; the contact point slides with
+      u = v + i w - i r = ((k + 1) lambda_+ - i k) r / k and friction dissipates
+      mu0 |u|^2.
+    - Rolling along the same path: the no-slip constraint (R1) fixes the spin,
+      w = r + i v = (1 + i lambda_+) r, and the torque (R3) dissipates
+      delta |w|^2.
+
+    Both powers are |r|^2 = |rho|^2 e^{2 alpha1 t} times a constant, so they
+    are equal at every instant, hence on average, for::
+
+        delta_P = mu0 |(k + 1) lambda_+ - i k|^2 / (k^2 |1 + i lambda_+|^2).
+
+    Evaluated as (sqrt(mu0) |(k + 1) alpha1 + i y| / (k |(1 - beta) + i alpha1|))^2
+    with y = (k + 1) beta - k written without cancellation; 1 - beta > 1 / (k + 1)
+    does not cancel either (beta < k / (k + 1)).  Limits: delta_P / mu0 -> 1 as
+    mu0 -> 0 (lambda_+ ~ sqrt(i mu0), so u ~ -i r and w ~ r: at small mu0 the
+    ball slides with the plane's speed under it and would roll with unit spin);
+    delta_P ~ k^4 / (mu0 (k + 1)^2) as mu0 -> infinity, where the slipping
+    motion becomes the no-slip one and both spins agree.  `own_spin_power_delta`
+    is the alternative that charges the torque on the slipping ball's own spin.
+    """
+    mu0, k, alpha1, beta, y = _slipping_mode(mu0, k)
+    num = np.hypot((k + 1.0) * alpha1, y)
+    den = k * np.hypot(1.0 - beta, alpha1)
+    return (np.sqrt(mu0) * num / den) ** 2
+
+
+def own_spin_power_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
+    """Return delta that matches the slipping power with the torque on the slipping spin.
+
+    Parameters
+    ----------
+    mu0, k : float or array_like
+        Slipping friction coefficient and inertia ratio, > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        delta_S = mu0 |(k + 1) lambda_+ - i k|^2 / |lambda_+|^2.
+
+    Notes
+    -----
+    NOT comparison (b): the alternative reading it replaces, kept so that the
+    difference can be shown.  On the slipping spiral about the axis it charges the
+    rolling-resistance power delta |w|^2 on the slipping ball's own spin
+    w = -i lambda_+ r / k, which a ball rolling along that path cannot have (its
+    spin is w = r + i v).  mu0 |u|^2 = delta_S |w|^2 at every instant;
+    delta_S -> k^2 as mu0 -> 0 (the slipping spin vanishes like sqrt(mu0) while
+    the slip does not), delta_S ~ k^4 / (mu0 (k + 1)^2) as mu0 -> infinity (as
+    `equal_power_delta`).  Same evaluation as `equal_power_delta`, with
+    |lambda_+| = beta |1 + i alpha1 / beta|.
+    """
+    mu0, k, alpha1, beta, y = _slipping_mode(mu0, k)
+    num = np.hypot((k + 1.0) * alpha1, y)
+    return (np.sqrt(mu0) * num / (beta * np.hypot(1.0, alpha1 / beta))) ** 2
+
+
+def equal_decay_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
+    """Return delta at which the rolling centre decays at the slipping |alpha2|.
+
+    Parameters
+    ----------
+    mu0, k : float or array_like
+        Slipping friction coefficient and inertia ratio, > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        The unique delta with |sigma_c(delta, k)| = |alpha2(mu0, k)|.
+
+    Notes
+    -----
+    Comparison (c): equal decay rates of the non-growing parts (z- of (2.7)
+    and the moving centre).  |sigma_c| = (delta + p) / (2 (k + 1)) increases
+    strictly with delta and lies between delta / (2 (k + 1)) and delta / k,
+    so the root lies in [k |alpha2|, 2 (k + 1) |alpha2|].  The lower end is the
+    root's limit for small mu0 (where |sigma_c| = delta / k (1 - O(delta))), so
+    in doubles it can be the root itself: Brent's method brackets it in
+    [k |alpha2| / 2, 4 (k + 1) |alpha2|], where the function changes sign by at
+    least a half at either end, and finds it to a relative 1e-15.  Large mu0:
+    delta ~ mu0 (k+1)^2 / k; small mu0: delta ~ k |alpha2| ~ k sqrt(mu0 / 2).
+    """
+    from scipy.optimize import brentq
+
+    mu0 = _validate.positive("mu0", mu0)
+    k = _validate.positive("k", k)
+    mu0, k = np.broadcast_arrays(mu0, k)
+    with np.errstate(over="ignore"):  # alpha1 of _spectrum (not used) overflows below 1e-206
+        target = -_spectrum(mu0, k).alpha2
+    out = np.empty(mu0.shape)
+    for idx in np.ndindex(mu0.shape):
+        kk, a2 = np.float64(k[idx]), float(target[idx])
+
+        def f(dl: float, kk: np.float64 = kk, a2: float = a2) -> float:
+            return float(-_spectrum_rolling(np.float64(dl), kk).sigma_c) / a2 - 1.0
+
+        lo, hi = 0.5 * float(kk) * a2, 4.0 * (float(kk) + 1.0) * a2
+        out[idx] = brentq(f, lo, hi, xtol=1e-300, rtol=1e-15)
+    return out

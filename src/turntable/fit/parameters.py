@@ -1,0 +1,110 @@
+"""The parameter vector of a fit: its layout, the model's columns of the Jacobian, standard errors.
+
+The parameters are the state at the first frame, the logarithm of the coefficient and,
+optionally, s = ln(Omega / Omega_given) and the axis (`turntable.fit`).  Standard errors
+treat the other parameters as nuisance parameters: se(ln c) = s / |(I - P) j_c|, j_c the
+column of ln c and P the projection on the other columns (`_stderr_of`).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import NDArray
+
+from turntable.fit.models import N_STATE, _axis_free, _check_model, _full_state, _solve
+
+#: Relative step in ln c of the central difference for the coefficient's column of J.
+LOG_STEP = 1e-5
+
+
+class _Layout(NamedTuple):
+    """Where each parameter sits in the vector theta of a fit.
+
+    theta = (state (n_state), ln c, [s = ln(Omega / Omega_given)], [a_x, a_y]), the axis
+    offset a in units of R.
+    """
+
+    model: str
+    fit_omega: bool
+    fit_axis: bool
+
+    @property
+    def n_state(self) -> int:
+        return N_STATE[self.model]
+
+    @property
+    def i_c(self) -> int:
+        return self.n_state
+
+    @property
+    def i_s(self) -> int:
+        return self.n_state + 1
+
+    @property
+    def i_axis(self) -> int:
+        return self.n_state + 1 + int(self.fit_omega)
+
+    @property
+    def size(self) -> int:
+        return self.n_state + 1 + int(self.fit_omega) + 2 * int(self.fit_axis)
+
+
+def _layout(model: str, fit_omega: bool, fit_axis: bool) -> _Layout:
+    return _Layout(_check_model(model), bool(fit_omega), _axis_free(model, fit_axis))
+
+
+def _unpack(
+    lay: _Layout, theta: NDArray[np.float64]
+) -> tuple[NDArray[np.float64], float, float, NDArray[np.float64]]:
+    """(full state, ln c, s, axis offset) of a parameter vector (s = 0, offset 0 if fixed)."""
+    s = float(theta[lay.i_s]) if lay.fit_omega else 0.0
+    a = theta[lay.i_axis : lay.i_axis + 2] if lay.fit_axis else np.zeros(2)
+    return _full_state(lay.model, theta[: lay.n_state]), float(theta[lay.i_c]), s, a
+
+
+def _columns(
+    lay: _Layout, c: float, s: float, z0: NDArray[np.float64], tau: NDArray[np.float64], k: float
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Dimensionless derivatives of the positions (2n rows): (others, ln c column).
+
+    The solution is linear in the initial state, so the column of the j-th state parameter
+    is the solution from the j-th unit vector; the column of ln c is a central difference;
+    that of s = ln Omega is tau v(tau) (the positions at tau e^s, differentiated in s); those
+    of the axis are 1 in its coordinate.  "Others" holds, in the order of theta, every
+    column but that of ln c.
+    """
+    tau_s = tau * math.exp(s)
+    ns = lay.n_state
+    cols = np.empty((2 * tau.size, lay.size - 1))
+    for j in range(ns):
+        e = np.zeros(ns)
+        e[j] = 1.0
+        cols[:, j] = _solve(lay.model, _full_state(lay.model, e), tau_s, c, k)[:, :2].ravel()
+    up = _solve(lay.model, z0, tau_s, c * math.exp(LOG_STEP), k)[:, :2]
+    down = _solve(lay.model, z0, tau_s, c * math.exp(-LOG_STEP), k)[:, :2]
+    j_c = ((up - down) / (2.0 * LOG_STEP)).ravel()
+    i = ns
+    if lay.fit_omega:
+        z = _solve(lay.model, z0, tau_s, c, k)
+        cols[:, i] = (tau_s[:, None] * z[:, 2:4]).ravel()
+        i += 1
+    if lay.fit_axis:
+        cols[:, i : i + 2] = np.tile(np.eye(2), (tau.size, 1))
+    return cols, j_c
+
+
+def _full_jacobian(others: NDArray[np.float64], j_c: NDArray[np.float64], lay: _Layout):
+    """The Jacobian in the order of theta: ``others`` with the column of ln c inserted."""
+    return np.insert(others, lay.i_c, j_c, axis=1)
+
+
+def _stderr_of(jac: NDArray[np.float64], i: int, sigma: float) -> float:
+    """se of parameter i with every other column a nuisance: sigma / |(I - P) j_i|."""
+    j_i = jac[:, i]
+    rest = np.delete(jac, i, axis=1)
+    coef, *_ = np.linalg.lstsq(rest, j_i, rcond=None)
+    norm = float(np.linalg.norm(j_i - rest @ coef))
+    return sigma / norm if norm > 0 else math.inf

@@ -1,0 +1,233 @@
+"""What a fit returns, and the criteria that compare and judge fits.
+
+The models are compared by the small-sample corrected Akaike criterion
+AICc = N ln(RSS / N) + 2 K + 2 K (K + 1) / (N - K - 1), K = p + 1 (Gaussian noise of
+unknown variance, the + 1), reported with the difference and the Akaike weights; a
+difference below `DECISIVE` is not decisive.  Whether a model fits to the noise level is
+told by the lag-1 autocorrelation of its residuals (`whiteness`): white noise gives about
+0 with a spread of 1 / sqrt(number of pairs); a wrong Omega, k, axis or sign of y leaves
+smooth structure and a large positive value.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+#: Two-sided 95 % quantile of the normal distribution (the `*_ci95` intervals).
+Z95 = 1.959963984540054
+#: AICc differences of at least this much are decisive (Burnham and Anderson: above 10,
+#: essentially no support for the other model).
+DECISIVE = 10.0
+#: Residuals count as not white when their lag-1 autocorrelation exceeds this many times
+#: its spread 1 / sqrt(pairs) for white noise (false alarm about 3e-5 for white noise).
+WHITENESS_Z = 4.0
+
+
+class ModelFit(NamedTuple):
+    """The fit of one model to a film.
+
+    Attributes
+    ----------
+    model : str
+        "slipping" or "rolling_resistance".
+    coefficient, stderr : float
+        The dimensionless coefficient (mu0 or delta) and its standard error.  At a bound
+        (``bound`` not None) the coefficient is where the search stopped, not a measurement.
+    log_stderr : float
+        Standard error of ln coefficient (the relative standard error).
+    state0 : numpy.ndarray
+        Dimensionless state (x, y, vx, vy, wx, wy) at the first frame t0 (relative to
+        ``axis``, velocities in units of R ``omega``).
+    t0 : float
+        Time of the first frame, s.
+    rss : float
+        Residual sum of squares, m^2.
+    rms_residual : float
+        sqrt(RSS / N), m: the rms residual per coordinate (N = 2n coordinates).
+    aic : float
+        N ln(RSS / N) + 2 K, K = p + 1.
+    aicc : float
+        AIC + 2 K (K + 1) / (N - K - 1); inf if N <= K + 1.
+    n_parameters, n_observations : int
+        p and N.
+    converged : bool
+        Whether `scipy.optimize.least_squares` met a convergence criterion.
+    at_bound : bool
+        Whether the coefficient ended at an end of `BOUNDS`.
+    residuals : numpy.ndarray
+        Data minus fit, m, shape (n, 2).
+    bound : str or None
+        "upper" or "lower": the end of `BOUNDS` the coefficient ran into; None inside.
+    limit : float
+        At a bound, the one-sided 95 % limit (lower limit at the upper bound, upper limit
+        at the lower one, `_limit`); nan otherwise.
+    omega, omega_stderr : float
+        Omega (rad/s) of the fit: the given one, or the fitted one with its standard error
+        (nan when given).
+    omega_at_bound : bool
+        With ``fit_omega``: Omega ran into its search range (factor `OMEGA_FACTOR`).
+    axis, axis_stderr : tuple of float
+        Position of the axis (m): the given one, or the fitted one (rolling model with
+        ``fit_axis``) with its standard errors (nan when given).
+    autocorrelation, autocorrelation_sd : float
+        Lag-1 autocorrelation of the residuals and its spread for white noise (`whiteness`).
+    orbital_rate : float
+        Angular rate of the growing mode (beta, or Im lambda_g) in units of Omega: the ball
+        turns about its spiral centre orbital_rate Omega T / (2 pi) times in a film of
+        length T.
+    exact : bool
+        Whether the fit reproduces the positions to rounding (`EXACT_FIT`): then there is no
+        noise, the residuals count as white, and AICc cannot weigh it against another
+        exact fit.
+    """
+
+    model: str
+    coefficient: float
+    stderr: float
+    log_stderr: float
+    state0: NDArray[np.float64]
+    t0: float
+    rss: float
+    rms_residual: float
+    aic: float
+    n_parameters: int
+    n_observations: int
+    converged: bool
+    at_bound: bool
+    residuals: NDArray[np.float64]
+    aicc: float = math.inf
+    bound: str | None = None
+    limit: float = math.nan
+    omega: float = math.nan
+    omega_stderr: float = math.nan
+    omega_at_bound: bool = False
+    axis: tuple[float, float] = (0.0, 0.0)
+    axis_stderr: tuple[float, float] = (math.nan, math.nan)
+    autocorrelation: float = math.nan
+    autocorrelation_sd: float = math.nan
+    orbital_rate: float = math.nan
+    exact: bool = False
+
+    @property
+    def ci95(self) -> tuple[float, float]:
+        """95 % interval exp(ln c -+ 1.96 se(ln c)) of the coefficient (not at a bound)."""
+        lo = math.exp(math.log(self.coefficient) - Z95 * self.log_stderr)
+        hi = math.exp(min(math.log(self.coefficient) + Z95 * self.log_stderr, 709.0))
+        return lo, hi
+
+    @property
+    def whiteness_z(self) -> float:
+        """Lag-1 autocorrelation in units of its spread for white noise."""
+        return self.autocorrelation / self.autocorrelation_sd
+
+    @property
+    def white(self) -> bool:
+        """Whether the residuals pass as white noise: |autocorrelation| < `WHITENESS_Z` sd
+        (or the fit is exact to rounding, and there is no noise to test)."""
+        return self.exact or not abs(self.whiteness_z) > WHITENESS_Z
+
+
+def aic(rss: float, n_observations: int, n_params: int) -> float:
+    """Return Akaike's criterion N ln(RSS / N) + 2 (p + 1) of a Gaussian least-squares fit.
+
+    The + 1 counts the noise variance, estimated as RSS / N.  An exact fit (RSS = 0,
+    only for noiseless data) counts as RSS = the smallest positive double.
+    """
+    rss = max(float(rss), float(np.finfo(float).tiny))
+    return n_observations * math.log(rss / n_observations) + 2.0 * (n_params + 1)
+
+
+def aicc(rss: float, n_observations: int, n_params: int) -> float:
+    """Return the small-sample corrected criterion AICc = AIC + 2 K (K + 1) / (N - K - 1).
+
+    Parameters
+    ----------
+    rss : float
+        Residual sum of squares.
+    n_observations : int
+        N, the number of coordinates (2 per frame).
+    n_params : int
+        p, the fitted parameters; K = p + 1 counts the noise variance.
+
+    Returns
+    -------
+    float
+        `aic` plus the correction (Hurvich and Tsai 1989), exact for a linear Gaussian
+        model; inf when N <= K + 1, where it is undefined.
+    """
+    k = n_params + 1
+    if n_observations - k - 1 <= 0:
+        return math.inf
+    return aic(rss, n_observations, n_params) + 2.0 * k * (k + 1) / (n_observations - k - 1)
+
+
+def whiteness(residuals: ArrayLike) -> tuple[float, float]:
+    """Return the lag-1 autocorrelation of residuals and its spread for white noise.
+
+    Parameters
+    ----------
+    residuals : array_like
+        Shape (n, 2): data minus fit of each coordinate at each frame, in frame order.
+
+    Returns
+    -------
+    rho : float
+        sum_c sum_i e_{i,c} e_{i+1,c} / sum_c sum_i e_{i,c}^2, pooled over the two
+        coordinates (0 for residuals that are all 0).
+    sd : float
+        1 / sqrt(2 (n - 1)), the standard deviation of rho for independent noise (the
+        Durbin-Watson statistic is about 2 (1 - rho)).
+
+    Notes
+    -----
+    The residual of the right model is the tracking noise, independent from frame to
+    frame: rho scatters about 0 by sd.  A model that misses the motion (a wrong Omega, k,
+    axis or sense of rotation, or the wrong mechanism) leaves a smooth error, correlated
+    from one frame to the next: rho approaches the share of that error in the residual
+    variance, many times sd.
+    """
+    e = np.asarray(residuals, dtype=float)
+    pairs = 2 * (e.shape[0] - 1)
+    if pairs <= 0:
+        return 0.0, math.inf
+    with np.errstate(all="ignore"):
+        scale = float(np.max(np.abs(e))) if e.size else 0.0
+        if not math.isfinite(scale) or scale == 0.0:
+            return 0.0, 1.0 / math.sqrt(pairs)
+        e = e / scale
+        rho = float(np.sum(e[1:] * e[:-1]) / np.sum(e * e))
+    return rho, 1.0 / math.sqrt(pairs)
+
+
+class FilmFit(NamedTuple):
+    """Both models fitted to one film, and the selection.
+
+    Attributes
+    ----------
+    fits : dict
+        {model: ModelFit}, in the order of `MODELS`.
+    selected : str or None
+        The model of smaller AICc; None when the film is too short to compare them
+        (fewer than `MIN_DOF` coordinates left, see `min_frames`) or a fit failed.
+    aicc_difference : float
+        AICc of the other model minus AICc of the selected one (>= 0); nan if none.
+    akaike_weights : dict
+        {model: exp(-Delta_i / 2) / sum_j exp(-Delta_j / 2)}, Delta_i = AICc_i - min AICc
+        (nan if an AICc is undefined).
+    decisive : bool
+        Whether a model is selected with an AICc difference of at least `DECISIVE` and
+        fits the film at least as well as the other (a smaller or equal RSS).
+    reason : str
+        Why the selection is not decisive ("" if it is).
+    """
+
+    fits: dict[str, ModelFit]
+    selected: str | None
+    aicc_difference: float
+    akaike_weights: dict[str, float]
+    decisive: bool = True
+    reason: str = ""

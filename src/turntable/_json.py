@@ -42,25 +42,20 @@ def _is_finite_number(_checker: Any, value: Any) -> bool:
     return isinstance(value, int | float) and not isinstance(value, bool) and math.isfinite(value)
 
 
-def validator(schema: dict[str, Any], *, finite_numbers: bool = False) -> Any:
-    """Return a JSON Schema (draft 2020-12) validator of ``schema`` for values read from YAML.
+def validator_class(*, finite_numbers: bool = False) -> Any:
+    """Return the JSON Schema (draft 2020-12) validator class for values read from YAML.
 
-    Parameters
-    ----------
-    schema : dict
-        The schema.
-    finite_numbers : bool
-        Also refuse inf and NaN where the schema asks for a ``number``.
-
-    Returns
-    -------
-    jsonschema.protocols.Validator
-        A validator whose ``integer`` is a Python int (not a bool, not a float such as
-        400.0, which JSON Schema itself counts as an integer).
+    Its ``integer`` is a Python int (not a bool, not a float such as 400.0, which JSON
+    Schema itself counts as an integer); with ``finite_numbers``, its ``number`` refuses inf
+    and NaN.
     """
     import jsonschema
 
     base = jsonschema.Draft202012Validator
     types = {"integer": _is_int} | ({"number": _is_finite_number} if finite_numbers else {})
-    cls = jsonschema.validators.extend(base, type_checker=base.TYPE_CHECKER.redefine_many(types))
-    return cls(schema)
+    return jsonschema.validators.extend(base, type_checker=base.TYPE_CHECKER.redefine_many(types))
+
+
+def validator(schema: dict[str, Any], *, finite_numbers: bool = False) -> Any:
+    """Return a validator of ``schema`` of `validator_class`."""
+    return validator_class(finite_numbers=finite_numbers)(schema)

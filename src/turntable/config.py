@@ -1,11 +1,6 @@
-"""Checks of a configuration of the workflow, run before it plans any job.
-
-`validate` checks a configuration against its JSON schema
-(``workflow/schemas/config.schema.yaml``: types, bounds, defaults) and fills in the
-defaults; `problems` checks what a schema cannot say: spans are increasing, a span ends
-where the solution is representable in doubles and a figure can still show it, a film has
-enough frames, names of films differ, the animated ball stays in its panels.
-"""
+"""Checks of a configuration of the workflow, run before it plans any job: `validate`
+against its JSON schema (``workflow/schemas/config.schema.yaml``), filling in the defaults,
+and `problems`, what a schema cannot say (spans the model or a figure cannot show, films)."""
 
 from __future__ import annotations
 
@@ -24,6 +19,7 @@ from referencing import Registry, Resource
 from referencing.jsonschema import DRAFT202012
 
 from turntable import rolling
+from turntable._json import validator_class
 from turntable.film import rig_from_config
 from turntable.solution import max_time, no_slip_state, nonholonomic, solve
 from turntable.spectrum import alpha1_peak, spectrum
@@ -67,16 +63,7 @@ def _load(uri: str) -> Resource:
 
 #: Draft 2020-12 filling in defaults, where an integer is an int (not 400.0) and a number
 #: is finite.
-Validator = validators.extend(
-    Draft202012Validator,
-    {"properties": _fill},
-    type_checker=Draft202012Validator.TYPE_CHECKER.redefine_many(
-        {
-            "integer": lambda _, v: type(v) is int,
-            "number": lambda _, v: type(v) in (int, float) and math.isfinite(v),
-        }
-    ),
-)
+Validator = validators.extend(validator_class(finite_numbers=True), {"properties": _fill})
 
 
 def validate(config: dict[str, Any], schema: str | Path) -> list[str]:

@@ -74,7 +74,7 @@ rule film_page:
         captions=expand(
             "workflow/report/{name}.rst", name=["fig8_measurability", "fig9_fit"]
         ),
-        code="workflow/scripts/report_figure.py",
+        code=[*PACKAGE, "workflow/scripts/report_figure.py"],
     output:
         ensure(
             report(

@@ -18,7 +18,7 @@ from pathlib import Path
 from report_figure import figure_html
 
 from turntable.fit import COEFFICIENT
-from turntable.fitplot import coefficient_text, selection_text
+from turntable.fit.plot import coefficient_text, selection_text
 
 logging.basicConfig(filename=snakemake.log[0], level=logging.INFO, filemode="w")
 measure = json.loads(Path(snakemake.input.measurability).read_text(encoding="utf-8"))

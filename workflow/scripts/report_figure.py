@@ -2,7 +2,7 @@
 
 Imported by workflow/scripts/figure_gallery.py and workflow/scripts/film_page.py (Snakemake
 puts the folder of a rule's script on the import path); both rules list this file in their
-input ``code`` (workflow/code_inputs.py finds the import), so that editing it rebuilds both
+input ``code``, so that editing it rebuilds both
 pages. Captions are the report's own
 (workflow/report/<figure>.rst, Jinja templates of the configuration, rendered as Snakemake
 renders them, then RST to HTML with docutils, which stops at any warning); the image is

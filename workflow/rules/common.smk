@@ -40,12 +40,12 @@ turntable.config.validate(DEFAULTS, SCHEMA)
 
 # The values of this run that differ from the defaults (section.key = value), and the
 # commit and state of the tree: params of the article, which names them.
-OVERRIDES = [
+OVERRIDES = sorted(
     f"{section}.{key} = {json.dumps(value)}"
     for section, values in config.items()
     for key, value in values.items()
     if value != DEFAULTS[section][key]
-]
+)
 _commit, _dirty = git_state(ROOT)
 GIT_STATE = f"{_commit} (dirty)" if _dirty else _commit
 

@@ -6,10 +6,16 @@ Independent reference computations (sympy, mpmath, numpy) live in
 
 from __future__ import annotations
 
+import functools
+from collections.abc import Callable, Sequence
+from typing import Any
+
 import numpy as np
 import pytest
 from hypothesis import settings
 from numpy.typing import NDArray
+
+from shared_build import computed_once, shared_dir
 
 # Parametrized grids shared by several modules ------------------------------------------
 
@@ -50,3 +56,12 @@ def z_generic() -> NDArray[np.float64]:
 def z_fig4() -> NDArray[np.float64]:
     """The initial state of Fig. 4: x = y = 1, v = 0, wx = 0, wy = 1."""
     return np.array([1.0, 1.0, 0.0, 0.0, 0.0, 1.0])
+
+
+@pytest.fixture(scope="session")
+def computed(
+    tmp_path_factory: pytest.TempPathFactory, worker_id: str
+) -> Callable[[str, Sequence[str], Callable[[str], Any]], dict[str, Any]]:
+    """``computed(name, keys, compute)``: ``{key: compute(key)}``, each value computed once
+    per test run and shared by the xdist workers (`shared_build.computed_once`)."""
+    return functools.partial(computed_once, shared_dir(tmp_path_factory, worker_id))

@@ -6,6 +6,14 @@ Independent reference computations (sympy, mpmath, numpy) live in
 
 from __future__ import annotations
 
+import os
+
+# One BLAS thread per process, set before numpy loads OpenBLAS (and inherited by the
+# commands the tests start): the matrices here are small, and with pytest -n 2 on two cores
+# the threads of OpenBLAS only wait for each other (a 6x6 expm takes ms instead of 50 us).
+for _name in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_name, "1")
+
 import functools
 from collections.abc import Callable, Sequence
 from typing import Any

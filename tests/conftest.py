@@ -14,16 +14,16 @@ import os
 for _name in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_name, "1")
 
-import functools
-from collections.abc import Callable, Sequence
-from typing import Any
+import functools  # noqa: E402
+from collections.abc import Callable, Sequence  # noqa: E402
+from typing import Any  # noqa: E402
 
-import numpy as np
-import pytest
-from hypothesis import settings
-from numpy.typing import NDArray
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+from hypothesis import settings  # noqa: E402
+from numpy.typing import NDArray  # noqa: E402
 
-from shared_build import computed_once, shared_dir
+from shared_build import computed_once, shared_dir  # noqa: E402
 
 # Parametrized grids shared by several modules ------------------------------------------
 

@@ -164,9 +164,7 @@ def test_registration_refuses_a_claim_without_expected_verdict_or_paper_value() 
 
 
 @pytest.mark.parametrize("claim_id", claims.claim_ids(), ids=claims.claim_ids())
-def test_every_claim_names_the_value_that_decides_it(
-    claim_id: str, evaluated: Callable
-) -> None:
+def test_every_claim_names_the_value_that_decides_it(claim_id: str, evaluated: Callable) -> None:
     """The registry names, for each claim, one reproduced value whose bound decides the
     verdict; it has a bound in the tolerance, and the bound holds."""
     result = evaluated(claim_id)

@@ -15,7 +15,6 @@ import numpy as np
 import pytest
 
 import turntable as tt
-from test_pipeline import clean_build, shared_tmp  # noqa: F401
 from turntable import cli, film, fit, fitplot
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -492,63 +491,6 @@ def test_the_readme_example_is_what_the_command_prints(
     assert checked >= 12, checked
 
 
-# --------------------------------------------------------------------------- in the workflow
-def test_workflow_fits_the_synthetic_film_with_the_command(
-    clean_build: Path,  # noqa: F811
-) -> None:
-    """Rule synthetic_film writes a film marked SYNTHETIC with its truth (config sections
-    film and synthetic_film); rule fit_film runs `turntable fit` on it: the JSON selects the
-    true model and recovers the coefficient within 4 standard errors."""
-    import yaml
-
-    workflow_build = clean_build
-    config = yaml.safe_load((workflow_build / "config" / "config.yaml").read_text())
-    (truth,) = [f for f in config["synthetic_film"]["films"] if f["name"] == "slipping"]
-    text = (workflow_build / "results/film/slipping.csv").read_text()
-    assert text.startswith("# SYNTHETIC DATA")
-    assert f"mu0 = {truth['coefficient']!r}" in text
-    rig = film.rig_from_config(config["film"])
-    data = film.read_film(workflow_build / "results/film/slipping.csv")
-    assert data.t.size == round(rig.camera.duration * rig.camera.fps) + 1
-    out = json.loads((workflow_build / "results/film/slipping.json").read_text())
-    assert out["data"]["synthetic"] is True  # read from the SYNTHETIC header
-    assert out["selected"] == truth["model"]
-    assert out["selection"]["decisive"] is True
-    assert out["warnings"] == []
-    # the command's stderr (its warnings) goes to the job's log: none for these films
-    assert (workflow_build / "logs/fit_film/slipping.log").read_text() == ""
-    record = json.loads((workflow_build / "results/film/synthetic.json").read_text())
-    assert record["synthetic"] is True
-    assert record["films"]["slipping"]["coefficient"] == truth["coefficient"]
-    assert abs(out["slipping"]["mu0"] - truth["coefficient"]) < 4 * out["slipping"]["mu0_stderr"]
-    assert out["setup"]["omega_rad_s"] == pytest.approx(rig.setup.omega)
-    assert out["setup"]["mass_kg"] == config["film"]["mass_kg"]
-    assert out["slipping"]["mu0_dim_kg_per_s"] == pytest.approx(
-        out["slipping"]["mu0"] * config["film"]["mass_kg"] * rig.setup.omega
-    )
-
-
-def test_report_page_of_the_films(clean_build: Path) -> None:  # noqa: F811
-    """results/film.html, the page "What a film can tell" of the report: both figures
-    embedded, the films marked SYNTHETIC, and the numbers of the JSON files (the fitted
-    coefficient as "value ± stderr", the limit of the camera)."""
-    import re
-
-    page = (clean_build / "results" / "film.html").read_text(encoding="utf-8")
-    assert page.count("data:image/png;base64,") == 2
-    assert "What a film can tell" in page
-    out = json.loads((clean_build / "results/film/slipping.json").read_text())
-    text = fitplot.coefficient_text(out["slipping"], "mu0")
-    assert "±" in text
-    assert "<b>slipping</b> (SYNTHETIC)</td><td>slipping, &mu;<sub>0</sub> = " in page
-    assert text in page
-    measure = json.loads((clean_build / "results/film/measurability.json").read_text())
-    assert f"below {measure['indistinguishable_above_mu0']:.3g}" in page
-    rules = (ROOT / "workflow" / "rules" / "film.smk").read_text()
-    assert re.search(r'report\(\s*"results/film.html",[^)]*category="What a film can tell"', rules)
-    assert '"results/film.html"' in (ROOT / "workflow" / "Snakefile").read_text()
-
-
 def test_rig_of_the_configuration() -> None:
     """Section film: a 1 cm steel ball (7850 kg/m^3) at 33 1/3 rpm, put down at rest 5 cm
     from the axis, filmed at 240 frames/s for 10 s with 0.2 mm noise."""
@@ -738,7 +680,6 @@ def test_plot_that_cannot_be_drawn(
     tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """If drawing fails, the JSON is already on stdout; one line on stderr, exit status 1."""
-    from turntable import fitplot
 
     def broken(*_: object) -> None:
         raise TypeError("unsupported format string passed to NoneType.__format__")
@@ -758,7 +699,6 @@ def test_plot_that_cannot_be_drawn(
 def test_plot_draws_missing_values_and_limits(tmp_path: Path) -> None:
     """The drawing of a JSON with None values (no finite rolling fit, no AICc difference)
     and a coefficient reported as a limit: drawn, with the limit in the label."""
-    from turntable import fitplot
 
     camera = film.Camera(30.0, 3e-4, 6.0)
     data = film.read_film(_rig_file(tmp_path, "slipping", 3000.0, camera, 1))

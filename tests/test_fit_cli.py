@@ -630,7 +630,7 @@ def test_coefficient_at_the_bound_is_a_limit(
 
 def test_time_in_milliseconds_warns(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     """Times written in ms: the warning asks whether t is in seconds."""
-    data = film.read_film(_rig_file(tmp_path, "slipping", 3.0, film.Camera(60.0, 2e-4, 2.0), 0))
+    data = film.read_film(_rig_file(tmp_path, "slipping", 3.0, film.Camera(60.0, 2e-4, 1.0), 0))
     path = tmp_path / "ms.csv"
     film.write_film(path, film.Film(1000.0 * data.t, data.x, data.y))
     lines = _warnings(run_here(capsys, str(path), "--radius", "0.005", "--rpm", "33.3"))

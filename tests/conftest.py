@@ -6,10 +6,24 @@ Independent reference computations (sympy, mpmath, numpy) live in
 
 from __future__ import annotations
 
-import numpy as np
-import pytest
-from hypothesis import settings
-from numpy.typing import NDArray
+import os
+
+# One BLAS thread per process, set before numpy loads OpenBLAS (and inherited by the
+# commands the tests start): the matrices here are small, and with pytest -n 2 on two cores
+# the threads of OpenBLAS only wait for each other (a 6x6 expm takes ms instead of 50 us).
+for _name in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_name, "1")
+
+import functools  # noqa: E402
+from collections.abc import Callable, Sequence  # noqa: E402
+from typing import Any  # noqa: E402
+
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+from hypothesis import settings  # noqa: E402
+from numpy.typing import NDArray  # noqa: E402
+
+from shared_build import computed_once, shared_dir  # noqa: E402
 
 # Parametrized grids shared by several modules ------------------------------------------
 
@@ -50,3 +64,12 @@ def z_generic() -> NDArray[np.float64]:
 def z_fig4() -> NDArray[np.float64]:
     """The initial state of Fig. 4: x = y = 1, v = 0, wx = 0, wy = 1."""
     return np.array([1.0, 1.0, 0.0, 0.0, 0.0, 1.0])
+
+
+@pytest.fixture(scope="session")
+def computed(
+    tmp_path_factory: pytest.TempPathFactory, worker_id: str
+) -> Callable[[str, Sequence[str], Callable[[str], Any]], dict[str, Any]]:
+    """``computed(name, keys, compute)``: ``{key: compute(key)}``, each value computed once
+    per test run and shared by the xdist workers (`shared_build.computed_once`)."""
+    return functools.partial(computed_once, shared_dir(tmp_path_factory, worker_id))

@@ -14,6 +14,7 @@ import importlib
 import json
 import math
 import re
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -55,9 +56,21 @@ def config_params() -> dict[str, Any]:
         return yaml.safe_load(fh)["claims"]
 
 
-@functools.cache
-def evaluated(claim_id: str) -> dict[str, Any]:
+def _evaluate(claim_id: str) -> dict[str, Any]:
     return claims.evaluate(claim_id, config_params())
+
+
+@pytest.fixture(scope="session")
+def evaluated_all(computed: Any) -> Callable[[], dict[str, dict[str, Any]]]:
+    """Every claim evaluated with the workflow's parameters, once per test run (shared by
+    the xdist workers, which split the work between them)."""
+    return functools.cache(lambda: computed("claims", claims.claim_ids(), _evaluate))
+
+
+@pytest.fixture(scope="session")
+def evaluated(computed: Any) -> Callable[[str], dict[str, Any]]:
+    """One claim evaluated with the workflow's parameters, once per test run."""
+    return functools.cache(lambda claim_id: computed("claims", [claim_id], _evaluate)[claim_id])
 
 
 def _numbers(value: Any) -> list[float]:
@@ -72,7 +85,7 @@ def _numbers(value: Any) -> list[float]:
 
 
 @pytest.mark.parametrize("claim_id", claims.claim_ids(), ids=claims.claim_ids())
-def test_claim_has_its_expected_verdict(claim_id: str) -> None:
+def test_claim_has_its_expected_verdict(claim_id: str, evaluated: Callable) -> None:
     result = evaluated(claim_id)
     assert set(result) == FIELDS
     assert result["id"] == claim_id
@@ -151,7 +164,7 @@ def test_registration_refuses_a_claim_without_expected_verdict_or_paper_value() 
 
 
 @pytest.mark.parametrize("claim_id", claims.claim_ids(), ids=claims.claim_ids())
-def test_every_claim_names_the_value_that_decides_it(claim_id: str) -> None:
+def test_every_claim_names_the_value_that_decides_it(claim_id: str, evaluated: Callable) -> None:
     """The registry names, for each claim, one reproduced value whose bound decides the
     verdict; it has a bound in the tolerance, and the bound holds."""
     result = evaluated(claim_id)
@@ -703,16 +716,16 @@ def test_rolling_orbital_rate_shifted_at_first_order_fails(
     assert abs(result["reproduced"]["rolling_orbital_shift_order_in_delta"] - 1.0) < 0.01
 
 
-def test_identities_carry_no_bound() -> None:
+def test_identities_carry_no_bound(evaluated_all: Callable) -> None:
     """A value that is exact by construction (key ``identity_*``) is reported, never used as
     a bound a verdict rests on."""
-    for claim_id in claims.claim_ids():
-        result = evaluated(claim_id)
+    for claim_id, result in evaluated_all().items():
         assert not [key for key in result["tolerance"] if key.startswith("identity_")], claim_id
 
 
-def test_fig6_draws_the_fit_the_claim_reports() -> None:
-    """Fig. 6(b) and the article quote one fit: limit_error_fit with the claims parameters."""
+def test_fig6_draws_the_fit_the_claim_reports(evaluated: Callable) -> None:
+    """The claim reports the fit that Fig. 6(b) draws: limit_error_fit with the claims
+    parameters."""
     from turntable.claims._core import clean
 
     c = claims.resolve_params(config_params())
@@ -720,11 +733,6 @@ def test_fig6_draws_the_fit_the_claim_reports() -> None:
     reproduced = evaluated("limit.convergence")["reproduced"]
     assert reproduced["position_order_k_paper"] == clean(fit.order)
     assert reproduced["position_errors_k_paper"] == clean(fit.error)
-    script = (ROOT / "scripts" / "fig6_limit.py").read_text(encoding="utf-8")
-    assert 'limit_error_fit(c["state_fig4"], c["t_limit"], c["mu0_limit"], c["k_paper"])' in script
-    assert "claims.resolve_params(p.claims)" in script
-    paper = (ROOT / "paper" / "paper.typ").read_text(encoding="utf-8")
-    assert paper.count('rep("limit.convergence", "position_order_k_paper")') >= 2  # text, caption
 
 
 def _ratios(*values: Any) -> dict[str, np.ndarray]:
@@ -799,7 +807,7 @@ def test_factors_with_the_same_verdict(ratios: Any, factor: float) -> None:
         assert much_faster_verdict(ratios, low) != verdict
 
 
-def test_rolling_comparison_much_faster_factor_is_a_parameter() -> None:
+def test_rolling_comparison_much_faster_factor_is_a_parameter(evaluated: Callable) -> None:
     """The factor comes from the parameters: with a factor above every ratio either way the
     verdict would be failed; the reported range says where that starts."""
     result = evaluated("comparison.rolling_resistance")
@@ -820,39 +828,41 @@ def test_rolling_comparison_much_faster_factor_is_a_parameter() -> None:
 # Reports -------------------------------------------------------------------------------
 
 
-def _small_report() -> dict[str, Any]:
-    ids = ["spectrum.kernel", "trajectory.untwisting_slows"]
-    records = [claims.evaluate(i, config_params()) for i in ids]
+SMALL_REPORT = ["spectrum.kernel", "trajectory.untwisting_slows"]
+
+
+def _report(records: list[dict[str, Any]]) -> dict[str, Any]:
+    """A claims report as rule `claims` writes it, of ``records``."""
     return {
         "schema": report.SCHEMA_VERSION,
         "package": "turntable",
         "version": turntable.__version__,
         "git_commit": "unknown",
         "params": claims.resolve_params(config_params()),
-        "order": ids,
+        "order": [r["id"] for r in records],
         "summary": report.summarize(records),
         "claims": {r["id"]: r for r in records},
     }
 
 
-def _full_report() -> dict[str, Any]:
-    records = [evaluated(cid) for cid in claims.claim_ids()]
-    return {
-        **_small_report(),
-        "order": claims.claim_ids(),
-        "summary": report.summarize(records),
-        "claims": {r["id"]: r for r in records},
-    }
+@pytest.fixture
+def small_report(evaluated: Callable) -> dict[str, Any]:
+    return _report([evaluated(cid) for cid in SMALL_REPORT])
+
+
+@pytest.fixture
+def full_report(evaluated_all: Callable) -> dict[str, Any]:
+    return _report(list(evaluated_all().values()))
 
 
 def test_claims_command_prints_each_verdict_and_its_deciding_value(
-    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], full_report: dict[str, Any]
 ) -> None:
     """``turntable claims REPORT``: one line per claim, in the report's order, with the
     verdict, the decisive key, its value and its bound exactly as the JSON holds them."""
     from turntable import cli
 
-    data = json.loads(report.to_json(_full_report()))
+    data = json.loads(report.to_json(full_report))
     path = tmp_path / "claims.json"
     path.write_text(json.dumps(data), encoding="utf-8")
     assert cli.main(["claims", str(path)]) == 0
@@ -872,17 +882,6 @@ def test_claims_command_prints_each_verdict_and_its_deciding_value(
     assert str(first["reproduced"][first["decisive"]]) in lines[0]
 
 
-def test_readme_example_of_the_claims_command_is_current() -> None:
-    """The lines the README shows as output of ``turntable claims`` are lines it prints."""
-    text = (ROOT / "README.md").read_text(encoding="utf-8")
-    example = text.split(".venv/bin/turntable claims", 1)[1].split("```text\n", 1)[1]
-    shown = example.split("```", 1)[0].splitlines()
-    assert shown
-    printed = {" ".join(line.split()) for line in report.decisive_lines(_full_report())}
-    for line in shown:
-        assert " ".join(line.split()) in printed, line
-
-
 def test_a_verdict_other_than_the_expected_one_may_leave_the_decisive_value_unbounded() -> None:
     record = {
         "decisive": "x",
@@ -897,7 +896,7 @@ def test_a_verdict_other_than_the_expected_one_may_leave_the_decisive_value_unbo
 
 
 def test_claims_command_refuses_what_is_not_a_report(
-    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], small_report: dict[str, Any]
 ) -> None:
     from turntable import cli
 
@@ -905,7 +904,7 @@ def test_claims_command_refuses_what_is_not_a_report(
         cli.main(["claims", str(tmp_path / "missing.json")])
     assert info.value.code == cli.BAD_INPUT
     assert "cannot read" in capsys.readouterr().err
-    old = json.loads(report.to_json(_small_report()))
+    old = json.loads(report.to_json(small_report))
     for record in old["claims"].values():
         del record["decisive"]
     path = tmp_path / "old.json"
@@ -918,9 +917,10 @@ def test_claims_command_refuses_what_is_not_a_report(
     assert err.count("\n") == 1
 
 
-def test_reports_are_deterministic() -> None:
-    first = report.to_json(_small_report())
-    second = report.to_json(_small_report())
+def test_reports_are_deterministic(small_report: dict[str, Any]) -> None:
+    """A second evaluation of the claims gives the same report, byte for byte."""
+    first = report.to_json(small_report)
+    second = report.to_json(_report([_evaluate(cid) for cid in SMALL_REPORT]))
     assert first == second
     assert first.endswith("\n")
     data = json.loads(first)
@@ -928,8 +928,8 @@ def test_reports_are_deterministic() -> None:
     assert report.to_markdown(data) == report.to_markdown(json.loads(second))
 
 
-def test_markdown_has_one_row_per_claim() -> None:
-    data = _small_report()
+def test_markdown_has_one_row_per_claim(small_report: dict[str, Any]) -> None:
+    data = small_report
     text = report.to_markdown(data)
     rows = [line for line in text.splitlines() if line.startswith("| `")]
     assert len(rows) == len(data["order"])

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pytest
@@ -97,12 +98,17 @@ def truths() -> list[Truth]:
 
 
 @pytest.fixture(scope="module")
-def fits(truths: list[Truth]) -> list[list[fit.ModelFit]]:
-    """The true model fitted to every noisy film: fits[i][seed] for truths[i]."""
-    return [
-        [fit.fit_model(tr.noisy(seed), tr.setup, tr.model) for seed in range(N_SEEDS)]
-        for tr in truths
-    ]
+def fits(truths: list[Truth], computed: Any) -> list[list[fit.ModelFit]]:
+    """The true model fitted to every noisy film: fits[i][seed] for truths[i].
+
+    Computed once per test run, the truths shared out between the xdist workers."""
+
+    def row(i: str) -> list[fit.ModelFit]:
+        tr = truths[int(i)]
+        return [fit.fit_model(tr.noisy(seed), tr.setup, tr.model) for seed in range(N_SEEDS)]
+
+    rows = computed("fit-coverage", [str(i) for i in range(len(truths))], row)
+    return list(rows.values())
 
 
 # --------------------------------------------------------------------------- recovery

@@ -2,17 +2,14 @@
 
 from __future__ import annotations
 
-import base64
 import io
 import re
 from pathlib import Path
 from types import SimpleNamespace
 
 import pytest
-import yaml
 
 from ci_build import full_config
-from test_pipeline import NAMES, clean_build, shared_tmp  # noqa: F401
 from turntable.claims.report import html_math, summarize, to_html
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -116,34 +113,6 @@ def test_claims_page_shows_no_plain_text_mathematics() -> None:
     for ascii_math in ("mu0", "alpha1", "exp(2 pi)"):
         assert ascii_math not in page
     assert "μ<sub>0</sub> = 0.1, α<sub>1</sub> &gt; 0" in page
-
-
-@pytest.fixture(scope="module")
-def gallery(clean_build: Path) -> tuple[str, Path]:  # noqa: F811
-    """results/figures.html of the clean build of tests/test_pipeline.py."""
-    return (clean_build / "results" / "figures.html").read_text(encoding="utf-8"), clean_build
-
-
-def test_every_figure_with_its_caption(gallery) -> None:
-    page, workdir = gallery
-    figures = re.findall(r'<figure id="([^"]+)">(.*?)</figure>', page, re.S)
-    # the animation first, shown (the report's own viewer only offers a GIF for download)
-    assert [name for name, _ in figures] == ["animation", *NAMES]
-    config = full_config(yaml.safe_load((workdir / "config" / "config.yaml").read_text()))
-    for name, body in figures:
-        image, mime = (
-            ("animation.gif", "image/gif") if name == "animation" else (f"{name}.png", "image/png")
-        )
-        data = base64.b64encode((workdir / "figures" / image).read_bytes()).decode()
-        assert f'src="data:{mime};base64,{data}"' in body, name
-        caption = body.split("<figcaption>", 1)[1]
-        assert "{{" not in caption
-        assert len(re.sub(r"<[^>]+>", "", caption)) > 100, name
-    # the captions' templates are filled from the configuration
-    fig4 = dict(figures)["fig4_trajectories"]
-    text = re.sub(r"<[^>]+>", "", fig4.split("<figcaption>", 1)[1])
-    for m in config["fig4_trajectories"]["mu0"]:
-        assert str(m) in text, m
 
 
 # Captions of the report ----------------------------------------------------------------

@@ -13,10 +13,8 @@ from pathlib import Path
 import mpmath
 import numpy as np
 import pytest
-import yaml
 
 import turntable.study as study
-from ci_build import CONFIG, full_config, job_counts, shared_build
 from turntable import Spectrum
 from turntable.reference import K_BALL, exact_roots
 
@@ -216,29 +214,3 @@ def test_summary_lists_failures(ball: dict) -> None:
 def test_bad_grid_raises(mu0: list[float], message: str) -> None:
     with pytest.raises(ValueError, match=message):
         study.section2_checks(K_BALL, mu0, Z_FIG4, T)
-
-
-def test_one_job_per_k_with_the_slurm_profile(
-    tmp_path_factory: pytest.TempPathFactory, worker_id: str
-) -> None:
-    """Planning the workflow with profiles/slurm: one study_k job per k, with the profile's
-    default resources (the executor is swapped for the dry-run one, so no plugin is needed).
-    """
-    _, record = shared_build(tmp_path_factory, worker_id)
-    plan = record["plan"]
-    assert record["plan_returncode"] == 0, plan
-    config = full_config(CONFIG)
-    profile = yaml.safe_load((ROOT / "profiles/slurm/config.yaml").read_text())
-    assert profile["executor"] == "slurm"
-    counts = job_counts(plan)
-    assert counts["study_k"] == len(config["study"]["k"])
-    assert counts["study"] == 1
-    for k in config["study"]["k"]:
-        assert f"results/study/k_{k}.json" in plan
-    jobs = plan.split("\nrule ")[1:]
-    study_jobs = [job for job in jobs if job.startswith("study_k:")]
-    assert len(study_jobs) == len(config["study"]["k"])
-    runtime = profile["default-resources"]["runtime"]
-    assert all(f"runtime={runtime}," in job for job in study_jobs)
-    claims_runtime = profile["set-resources"]["claims"]["runtime"]
-    assert [f"runtime={claims_runtime}," in j for j in jobs if j.startswith("claims:")] == [True]

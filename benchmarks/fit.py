@@ -2,7 +2,7 @@
 
 Time: `turntable.fit.fit_film` (both models), each `fit_model`, the fit with Omega free,
 the check with Omega and the axis free (`turntable.fit.consistency`, which the command
-runs too), on the film of the configured rig (config/config.yaml, section film: 240
+runs too), on the film of the configured rig (the workflow's configuration, section film: 240
 frames/s for 10 s, 2401 frames), best of repeats; and the wall-clock time of the command
 ``turntable fit`` on that film, interpreter start included.
 
@@ -75,12 +75,12 @@ from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
-import yaml
 
 import _common
 import turntable as tt
 from _common import best_time
 from turntable import film, fit
+from turntable.config import validate
 
 NAME = "fit"
 ROOT = Path(__file__).resolve().parents[1]
@@ -106,7 +106,10 @@ LIMIT_PROBABILITY = 0.95
 
 
 def _config() -> dict[str, Any]:
-    return yaml.safe_load((ROOT / "config" / "config.yaml").read_text())
+    """The reference configuration: the defaults of the workflow's schema."""
+    config: dict[str, Any] = {}
+    validate(config, ROOT / "workflow" / "schemas" / "config.schema.yaml")
+    return config
 
 
 def random_truth(rng: np.random.Generator, model: str) -> tuple[film.Setup, float, np.ndarray]:
@@ -178,7 +181,7 @@ def bench_time(repeat: int) -> dict[str, Any]:
     times["command turntable fit (wall clock, with the check)"] = min(walls)
     return {
         "what": (
-            f"one fit of a film of {data.t.size} frames (section film of config/config.yaml: "
+            f"one fit of a film of {data.t.size} frames (section film of the configuration: "
             f"{rig.camera.fps:g} frames/s, {rig.camera.duration:g} s; the synthetic film "
             f"'slipping'); best of {repeat}"
         ),

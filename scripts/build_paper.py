@@ -40,7 +40,7 @@ with tempfile.TemporaryDirectory() as tmp:
     build = {
         "provenance": provenance(Path(snakemake.scriptdir).parent),
         "repository": snakemake.params.repository.rstrip("/"),
-        # values of the configuration other than config/config.yaml's (common.smk)
+        # values of the configuration other than the defaults (common.smk)
         "config_overrides": list(snakemake.params.config_overrides),
     }
     (root / "results" / "build.json").write_text(json.dumps(build, indent=1, sort_keys=True))

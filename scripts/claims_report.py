@@ -2,7 +2,7 @@
 """Evaluate the claims registry and write results/claims.json and results/claims.md.
 
 Run by rule ``claims`` (workflow/rules/claims.smk); the parameters are the ``claims:`` section
-of config/config.yaml.
+of the configuration.
 """
 
 # %%

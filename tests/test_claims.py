@@ -1,7 +1,7 @@
 """The claims registry: one test per registered claim, plus the registry's own guarantees.
 
 The tests are generated from the registry: each claim is checked with the parameters of
-the ``claims:`` section of config/config.yaml (the same the workflow uses for
+the ``claims:`` section of the workflow's configuration (the same the workflow uses for
 results/claims.json), and a verdict other than the one its registration expects
 (``expected=`` of `turntable.claims.register`) fails the suite.  Further tests break the
 model on purpose and require the affected check to notice.
@@ -25,6 +25,7 @@ import scipy.linalg
 import yaml
 
 import turntable
+from ci_build import full_config
 from turntable import claims
 from turntable.claims import report
 from turntable.claims._core import mu0_grid, split_bound, within
@@ -51,9 +52,8 @@ FIELDS = {
 
 @functools.cache
 def config_params() -> dict[str, Any]:
-    """The ``claims:`` section of config/config.yaml (the workflow's parameters)."""
-    with open(ROOT / "config" / "config.yaml", encoding="utf-8") as fh:
-        return yaml.safe_load(fh)["claims"]
+    """The ``claims:`` section of the workflow's configuration, defaults filled in."""
+    return full_config()["claims"]
 
 
 def _evaluate(claim_id: str) -> dict[str, Any]:

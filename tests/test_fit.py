@@ -746,11 +746,9 @@ def test_bound_is_reached_only_below_the_reliable_level() -> None:
     reliable_relative_error (configuration, 0.2).  Checked on 40 films at a point below
     (predicted 0.05: the scatter of ln mu0 is the bound within 3/sqrt(2 n)) and one above
     (predicted 0.6: the scatter exceeds it by more than half)."""
-    import yaml
+    from ci_build import full_config
 
-    level = yaml.safe_load((Path(__file__).parents[1] / "config" / "config.yaml").read_text())[
-        "fig8_measurability"
-    ]["reliable_relative_error"]
+    level = full_config()["fig8_measurability"]["reliable_relative_error"]
     camera = film.Camera(fps=30.0, noise=3e-4, duration=6.0)
     n = 40
     for mu0, reached in ((13.0, True), (150.0, False)):

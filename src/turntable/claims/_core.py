@@ -64,7 +64,7 @@ def resolve_params(params: Mapping[str, Any] | None = None) -> dict[str, Any]:
 
     The defaults and the rules (types, bounds, lengths) are those of the JSON schema
     ``params.schema.yaml`` of this package (see `params_schema`), the same the workflow
-    validates the ``claims:`` section of ``config/config.yaml`` against; an integer must
+    validates the ``claims:`` section of the workflow's configuration against; an integer must
     be an ``int`` (not ``400.0``). The one rule a schema cannot express is added here:
     ``mu0_range`` is increasing. (That ``state_si`` is not all zero is the schema's.)
 
@@ -72,7 +72,7 @@ def resolve_params(params: Mapping[str, Any] | None = None) -> dict[str, Any]:
     ----------
     params : mapping, optional
         Any subset of the keys of `DEFAULT_PARAMS` (for instance the
-        ``claims:`` section of ``config/config.yaml``).
+        ``claims:`` section of the workflow's configuration).
 
     Returns
     -------

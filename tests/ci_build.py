@@ -32,7 +32,7 @@ CONFIG: dict[str, Any] = {
     "fig3_modal_terms": {"mu0": [0.1], "n_points": 200},
     "fig5_damping_ratio": {"k": [0.4], "n_points": 200},
     "fig6_limit": {"mu0_trajectories": [10.0], "mu0_layer": [100.0], "n_points": 200},
-    "fig7_rolling_resistance": {"n_grid": 20},
+    "fig7_rolling_resistance": {"n_grid": 20, "comparison": "equal_power"},  # the default
     "study": {"k": [0.4], "n_points": 20, "n_times": 20},
     "film": {"fps": 30.0},
     "fig8_measurability": {"n_grid": 8},

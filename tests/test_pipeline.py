@@ -4,6 +4,8 @@ jobs a change reruns (on copies of the clean build of tests/ci_build.py)."""
 from __future__ import annotations
 
 import hashlib
+import json
+import re
 import shutil
 import subprocess
 from pathlib import Path
@@ -189,3 +191,20 @@ def test_the_animation_moves_frame_by_frame(clean_build: Path) -> None:
             frames.append(np.asarray(gif.convert("RGB")))
     assert not np.array_equal(frames[0], frames[1])
     assert not np.array_equal(frames[1], frames[2])
+
+
+def test_the_article_lists_exactly_the_values_that_differ_from_the_defaults(
+    clean_build: Path,
+) -> None:
+    """Compared as data: a value restated as its default (fig7's comparison) is not listed."""
+    first = nbformat.read(clean_build / "results/notebooks/build_paper.ipynb", 4).cells[0].source
+    defaults = ci_build.full_config()
+    expected = sorted(
+        f"{section}.{key} = {json.dumps(value)}"
+        for section, values in ci_build.CONFIG.items()
+        for key, value in values.items()
+        if value != defaults[section][key]
+    )
+    assert expected
+    listed = re.findall(r"'([a-z0-9_]+\.[a-z0-9_]+ = [^']*)'", first)
+    assert listed == expected

@@ -5,6 +5,7 @@ and `problems`, what a schema cannot say (spans the model or a figure cannot sho
 from __future__ import annotations
 
 import copy
+import functools
 import math
 import re
 import sys
@@ -66,15 +67,21 @@ def _load(uri: str) -> Resource:
 Validator = validators.extend(validator_class(finite_numbers=True), {"properties": _fill})
 
 
+@functools.cache
+def _validator(uri: str) -> Any:
+    return Validator(_load(uri).contents | {"$id": uri}, registry=Registry(retrieve=_load))
+
+
 def validate(config: dict[str, Any], schema: str | Path) -> list[str]:
     """Fill in the defaults of `config` from `schema` and return one line per problem.
 
     Each line is the key's path (``section.key[i]``) and what is expected.
     """
-    uri = Path(schema).resolve().as_uri()
-    validator = Validator(_load(uri).contents | {"$id": uri}, registry=Registry(retrieve=_load))
     lines = []
-    for error in sorted(validator.iter_errors(config), key=lambda e: list(map(str, e.path))):
+    for error in sorted(
+        _validator(Path(schema).resolve().as_uri()).iter_errors(config),
+        key=lambda e: list(map(str, e.path)),
+    ):
         at = "".join(f"[{p}]" if isinstance(p, int) else f".{p}" for p in error.absolute_path)
         text = isinstance(error.instance, str) and re.fullmatch(NUMBER, error.instance)
         hint = " (YAML reads it as text: write 1.0e-4)" if text else ""

@@ -71,7 +71,11 @@ client = NotebookClient(
     kernel_name="python3",
     resources={"metadata": {"path": "."}},
     record_timing=False,
-    extra_arguments=["--InteractiveShell.ast_node_interactivity=none", "--colors=nocolor"],
+    extra_arguments=[
+        "--InteractiveShell.ast_node_interactivity=none",
+        "--colors=nocolor",
+        "--HistoryManager.enabled=False",
+    ],
 )
 try:
     client.execute()

@@ -102,7 +102,7 @@ def test_a_notebook_runs_again_by_itself_and_writes_the_same_bytes(copy: Path) -
 def test_a_forced_rerun_writes_the_same_bytes(copy: Path) -> None:
     files = ["figures/fig9_fit.pdf", "figures/fig9_fit.png", "results/notebooks/fig9_fit.ipynb"]
     before = {f: sha256(copy / f) for f in files}
-    proc = in_project(copy, "--forcerun", "fig9_fit", "figures/fig9_fit.pdf")
+    proc = in_project(copy, "figures/fig9_fit.pdf", "--forcerun", "fig9_fit")
     assert proc.returncode == 0, proc.stderr
     assert "fig9_fit" in proc.stderr
     assert {f: sha256(copy / f) for f in files} == before

@@ -75,6 +75,7 @@ client = NotebookClient(
         "--InteractiveShell.ast_node_interactivity=none",
         "--colors=nocolor",
         "--HistoryManager.enabled=False",
+        "--IPKernelApp.log_level=ERROR",  # not its warning of TCP on localhost, every job
     ],
 )
 try:

@@ -103,9 +103,11 @@ def _order(config: Mapping[str, Any]) -> Iterator[str]:
     """Pairs named ``*_span`` or ``*_range`` increase; names of films differ."""
     for section, values in config.items():
         for key, value in values.items():
-            nested = key.endswith(("_span", "_range")) and isinstance(value[0], list)
+            if not key.endswith(("_span", "_range")):
+                continue
+            nested = isinstance(value[0], list)
             for i, pair in enumerate(value if nested else [value]):
-                if key.endswith(("_span", "_range")) and not pair[0] < pair[1]:
+                if not pair[0] < pair[1]:
                     at = f"{section}.{key}" + (f"[{i}]" if nested else "")
                     yield f"{at} = {pair}: expected [start, end] with start < end"
     names = [film["name"] for film in config["synthetic_film"]["films"]]
@@ -132,14 +134,16 @@ def _late(end: float, model: str, coefficients: list[float], k: float, z0: Any) 
     rate = np.asarray(spectrum(c, k).alpha1 if slipping else rolling.growth_rate(c, k))
     order = np.argsort(-rate)
     for x in c[order][rate[order] * end > 0.5 * math.log(sys.float_info.max)]:
-        if slipping and end > (limit := float(max_time(x, k, z0))):
-            return (
-                f"ends at t = {end:g}, after t = {limit:.6g}, where the slipping ball "
-                f"(mu0 = {x:.6g}, k = {k:g}) leaves the doubles; expected t <= {limit:.6g}"
-            )
+        if slipping:
+            limit = float(max_time(x, k, z0))
+            if end > limit:
+                return (
+                    f"ends at t = {end:g}, after t = {limit:.6g}, where the slipping ball "
+                    f"(mu0 = {x:.6g}, k = {k:g}) leaves the doubles; expected t <= {limit:.6g}"
+                )
+            continue
         try:
-            if not slipping:
-                rolling.solve(z0, [end], x, k)
+            rolling.solve(z0, [end], x, k)
         except ValueError as exc:
             return f"ends at t = {end:g}, too late for the rolling ball (delta = {x:.6g}): {exc}"
     return None

@@ -24,7 +24,7 @@ CORES ?= all
 READ_CONFIG = $(BIN)/python -c 'import sys, yaml; sys.excepthook = lambda t, e, tb: print(f"{sys.argv[1]}: {e}", file=sys.stderr); yaml.safe_load(open(sys.argv[1]))'
 SNAKEMAKE = $(if $(CONFIGFILE),$(READ_CONFIG) $(CONFIGFILE) && )$(BIN)/snakemake$(if $(CONFIGFILE), --configfile $(CONFIGFILE))
 
-.PHONY: all setup test lint bench mutants lock clean notebooks report readme-figure
+.PHONY: all setup test lint bench mutants lock clean notebooks report readme-figure cluster-test
 
 # The HTML report is rewritten only when a file it is made from is newer than it (an output
 # it shows, a caption of workflow/report/, a rule or script, the configuration), so that a second
@@ -82,6 +82,14 @@ mutants: $(STAMP)
 bench: $(STAMP)
 	$(BIN)/python benchmarks/run.py
 	$(BIN)/python benchmarks/pipeline.py
+
+# The workflow on a real SLURM cluster of one node, started here and stopped after (as root:
+# installs Debian's slurm-wlm and munge when missing). See tools/cluster_test.py.
+cluster-test: $(STAMP)
+	command -v slurmctld >/dev/null || { apt-get install -y -q slurm-wlm munge || \
+		{ apt-get update -q && apt-get install -y -q slurm-wlm munge; }; }
+	$(PIP_INSTALL) -e ".[slurm]"
+	$(BIN)/python tools/cluster_test.py
 
 # Re-resolve the newest versions into constraints.txt (needs the network).
 lock:

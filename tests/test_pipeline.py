@@ -26,7 +26,7 @@ from shared_build import shared_dir
 OUTPUTS = sorted(f"figures/{name}.{ext}" for name in NAMES for ext in ("pdf", "png"))
 SCRIPTS = sorted(p.stem for p in (ROOT / "scripts").glob("*.py"))
 DOWNSTREAM_OF_FIGURES = {"paper", "figure_gallery", "all"}
-DRAWING = {*NAMES, "study", "animation"}  # the jobs that use scripts/_style
+DRAWING = {*NAMES, "study", "animation", "campaign"}  # the jobs that use scripts/_style
 
 
 @pytest.fixture(scope="session")
@@ -144,6 +144,15 @@ def _change_a_parameter(copy: Path) -> None:
     (copy / "config/config.yaml").write_text(yaml.safe_dump(config))
 
 
+def _edit_campaign(copy: Path, old: str, new: str) -> None:
+    """Replace `old` by `new` in the first row of the campaign table that holds it."""
+    table = copy / "config/campaign.csv"
+    lines = table.read_text().splitlines(keepends=True)
+    row = next(i for i, line in enumerate(lines) if old in line)
+    lines[row] = lines[row].replace(old, new)
+    table.write_text("".join(lines))
+
+
 EDITS = {
     "the package": (lambda c: _append(c / "src/turntable/spectrum.py"), "everything"),
     "editor files in the package": (
@@ -165,6 +174,11 @@ EDITS = {
         {"figure_gallery", "all"},
     ),
     "a parameter": (_change_a_parameter, {"fig3_modal_terms"} | DOWNSTREAM_OF_FIGURES),
+    "a label of the campaign": (lambda c: _edit_campaign(c, ",felt,", ",wool,"), {"campaign", "all"}),
+    "the rate of one film": (
+        lambda c: _edit_campaign(c, ",45.0,", ",46.0,"),
+        {"campaign_film", "campaign_fit", "campaign", "all"},
+    ),
     "the same values in another order": (_same_values_in_another_order, set()),
 }
 

@@ -1,13 +1,14 @@
 """Print the short summary that ends `make`: verdict counts, every claim not confirmed with
 what its verdict means (the registry's gist), paths.
 
-Usage: ``python tools/build_summary.py [results/claims.json] [results/study/summary.json]``.
-Reads only the outputs of the build (the claims report and the study summary); a missing
+Usage: ``python tools/build_summary.py [claims.json] [study/summary.json] [campaign/summary.csv]``
+(defaults in results/). Reads only the outputs of the build; a missing
 file is reported as such instead of failing, so the summary never hides the build's result.
 """
 
 from __future__ import annotations
 
+import csv
 import json
 import sys
 import textwrap
@@ -83,9 +84,21 @@ def study_line(summary: dict) -> str:
     return "study: failed checks: " + ", ".join(summary["failed"])
 
 
+def campaign_lines(path: Path) -> list[str]:
+    """One line on the campaign, then one per film that failed, with its row and reason."""
+    with path.open(encoding="utf-8") as f:
+        rows = list(csv.DictReader(f))
+    failed = [r for r in rows if r["status"] == "failed"]
+    lines = [f"campaign: {len(rows) - len(failed)} films fitted, {len(failed)} failed ({path})"]
+    return lines + [
+        shorten(f"  failed: row {r['row']} ({r['file']}): {r['warnings']}") for r in failed
+    ]
+
+
 def main(argv: list[str]) -> int:
     claims = Path(argv[1] if len(argv) > 1 else "results/claims.json")
     study = Path(argv[2] if len(argv) > 2 else "results/study/summary.json")
+    campaign = Path(argv[3] if len(argv) > 3 else "results/campaign/summary.csv")
     lines = ["", "== turntable: summary of the build =="]
     if claims.is_file():
         lines += claims_lines(json.loads(claims.read_text(encoding="utf-8")))
@@ -93,6 +106,8 @@ def main(argv: list[str]) -> int:
         lines.append(f"claims: {claims} is missing")
     if study.is_file():
         lines.append(study_line(json.loads(study.read_text(encoding="utf-8"))))
+    if campaign.is_file():
+        lines += campaign_lines(campaign)
     print("\n".join(lines))
     return 0
 

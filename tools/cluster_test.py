@@ -5,8 +5,9 @@
 2. Builds ``TARGETS`` twice, in two copies of the sources: locally (``--cores``) and
    through ``profiles/slurm``, where every job goes through ``sbatch``. Reads each job id
    back from SLURM (``scontrol show job``: COMPLETED) and compares the outputs byte for byte.
-3. Forces the study again, cancels one running job with ``scancel``, checks that Snakemake
-   reports the job as failed, and that a second run finishes with the same bytes.
+3. Removes one result of the study, cancels the job that rebuilds it with ``scancel``,
+   checks that Snakemake reports the job as failed, and that a second run finishes with the
+   same bytes.
 4. Stops the daemons and removes the directory, also when a step fails.
 
 Usage (as root, with slurm-wlm and munge installed; ``make cluster-test`` installs them):
@@ -30,7 +31,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 SNAKEMAKE = str(Path(sys.executable).with_name("snakemake"))
 SOURCES = ["config", "workflow", "scripts", "paper", "src", "profiles"]
-TARGETS = ["study"]
+TARGETS = ["study", "campaign"]
 OUTPUTS = ["results/study", "results/campaign"]
 SLURM_FLAGS = [
     "--profile",

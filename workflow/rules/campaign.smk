@@ -33,7 +33,9 @@ rule campaign_film:
     conda:
         "../envs/turntable.yaml"
     params:
-        spec=lambda w: json.dumps(simulation(CAMPAIGN_SYNTHETIC[w.film], config["film"])),
+        spec=lambda w: json.dumps(
+            simulation(CAMPAIGN_SYNTHETIC[w.film], config["film"])
+        ),
     shell:
         "python -m turntable.campaign simulate {params.spec:q} {output:q} 2> {log:q}"
 

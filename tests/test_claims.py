@@ -816,13 +816,13 @@ def test_rolling_comparison_much_faster_factor_is_a_parameter(evaluated: Callabl
         == claims.resolve_params(config_params())["much_faster_factor"]
     )
     low, high = result["reproduced"]["much_faster_factors_with_this_verdict"]
-    assert low == 1.0
-    assert high == pytest.approx(
-        max(
-            result["reproduced"]["largest_slipping_over_rolling"],
-            1 / result["reproduced"]["smallest_slipping_over_rolling"],
-        )
-    )
+    smallest = result["reproduced"]["smallest_slipping_over_rolling"]
+    largest = result["reproduced"]["largest_slipping_over_rolling"]
+    # Under equal power slipping is faster everywhere, the ratio falling to one: undecidable
+    # from one to its largest ratio, failed above.
+    assert 1.0 == pytest.approx(smallest, abs=1e-9)
+    assert smallest < result["reproduced"]["much_faster_factor"] <= largest
+    assert (low, high) == pytest.approx((1.0, largest))
 
 
 # Reports -------------------------------------------------------------------------------

@@ -128,9 +128,8 @@ def _dimensional_matrix(mu0_dim: float, k: float, ball: dict[str, float]) -> np.
         f"{DIMENSIONAL_BALL['R']:.3g} m and mass {DIMENSIONAL_BALL['m']:.3g} kg on a plane "
         f"turning at Omega = {DIMENSIONAL_BALL['Omega']:.4g} rad/s, mu0_dim = mu0 m Omega), "
         "solve the dimensional equations (Jacobian built with cross products) for the spin "
-        "w = S r at which a ball at rest at r stays there, and compare S with Omega/R times the identity "
-        "(and with R/Omega, 1 and R Omega, to show the check "
-        "tells them apart)."
+        "w = S r at which a ball at rest at r stays there, and compare S with Omega/R times "
+        "the identity (and with R/Omega, 1 and R Omega, to show the check tells them apart)."
     ),
 )
 def _kernel(p: dict[str, Any]) -> Outcome:

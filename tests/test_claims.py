@@ -820,7 +820,7 @@ def test_rolling_comparison_much_faster_factor_is_a_parameter(evaluated: Callabl
     largest = result["reproduced"]["largest_slipping_over_rolling"]
     # Under equal power slipping is faster everywhere, the ratio falling to one: undecidable
     # from one to its largest ratio, failed above.
-    assert 1.0 == pytest.approx(smallest, abs=1e-9)
+    assert pytest.approx(smallest, abs=1e-9) == 1.0
     assert smallest < result["reproduced"]["much_faster_factor"] <= largest
     assert (low, high) == pytest.approx((1.0, largest))
 

@@ -960,3 +960,12 @@ def test_git_commit_outside_a_checkout_is_unknown(tmp_path: Path) -> None:
     assert git_state(tmp_path)[0] == "unknown"
     commit = git_state(ROOT)[0]
     assert commit == "unknown" or len(commit) == 40
+
+
+def test_an_addition_never_makes_a_claim_refined() -> None:
+    """The one verdict rule: a statement that holds as stated is confirmed, whatever else."""
+    assert claims.decide(True, "refined") == "confirmed"
+    assert claims.decide(False, "refined") == "refined"
+    assert claims.decide(False) == "failed"
+    with pytest.raises(ValueError, match="otherwise"):
+        claims.decide(False, "confirmed")

@@ -1,10 +1,9 @@
 # %%
 """Compile paper/paper.typ into paper/paper.pdf with the typst Python package.
 
-Run by rule ``paper`` (workflow/rules/paper.smk). The sources, results/claims.json, the
-film results (results/film/*.json: the synthetic films' truth and fits, the measurability
-of the camera) and the figures (the rule's inputs, nothing else) are copied into a temporary
-tree with the layout the article expects (paper/, results/, results/film/, figures/), which
+Run by rule ``paper`` (workflow/rules/paper.smk). The sources, results/claims.json and the
+figures the article shows (the rule's inputs, nothing else) are copied into a temporary
+tree with the layout the article expects (paper/, results/, figures/), which
 is the Typst root; so the build does not depend on the working directory. System fonts are
 ignored and the creation date is fixed (config ``paper.timestamp``), so two builds give the
 same bytes. ``results/build.json`` in that tree is the provenance of this build
@@ -30,7 +29,6 @@ with tempfile.TemporaryDirectory() as tmp:
     layout = {
         "paper": snakemake.input.sources,
         "results": [snakemake.input.claims],
-        "results/film": snakemake.input.film,
         "figures": snakemake.input.figures,
     }
     for folder, files in layout.items():

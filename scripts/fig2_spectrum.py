@@ -3,7 +3,8 @@
 
 Caption: growth rate alpha1 of the unstable modes, decay rate |alpha2| of the damped modes
 and their common frequency beta (2.5), against the friction coefficient mu0 (k = 2/5 by
-default). Dotted: the small-friction asymptote beta ~ sqrt(mu0/2); dashed: the
+default), on log-log axes. Dotted: the small-friction asymptote sqrt(mu0/2), shared by all
+three rates (drawn where it is within `asymptote_within` of beta); dashed: the
 large-friction expansion (3.2); each drawn where its relative difference from the exact
 rate is at most `asymptote_within`. The dot marks the maximum of alpha1 (a = golden ratio).
 """
@@ -44,7 +45,7 @@ ax.plot(
     near(small.beta, s.beta),
     "k:",
     lw=1.0,
-    label=r"small $\mu_0$: $\beta \approx \sqrt{\mu_0/2}$",
+    label=r"small $\mu_0$: all three $\approx \sqrt{\mu_0/2}$",
 )
 ax.plot([], [], "k--", lw=0.7, label=r"large $\mu_0$: series in $1/\mu_0$")
 ax.plot(peak.mu0, peak.alpha1, "o", color="C0", ms=4)

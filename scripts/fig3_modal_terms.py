@@ -4,8 +4,8 @@
 Caption: the coordinate x(t) = x0 + x+(t) + x-(t) of the centre of the ball split as in
 (2.7): x+ (modes alpha1 +- i beta, growing) and x- (modes alpha2 +- i beta, decaying), for
 each friction coefficient mu0 of the configuration; initial state x = y = 1, v = w = 0,
-k = 2/5 by default, over the configured span (t <= 8 by default); each panel gives that span
-in periods 2 pi/beta.
+k = 2/5 by default, over the configured span (t <= 40 by default, more than one period at
+each mu0); each panel gives that span in periods 2 pi/beta.
 """
 
 # %%

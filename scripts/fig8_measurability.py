@@ -110,7 +110,7 @@ twin = ax_p.get_legend_handles_labels()
 ax_d.legend(lines[0] + twin[0], lines[1] + twin[1], fontsize=7, loc="lower left")
 cam = rig.camera
 fig.suptitle(
-    f"{2 * rig.setup.radius * 1e3:g} mm ball at {rig.setup.omega:.3g} rad/s; "
+    f"ball of radius {rig.setup.radius * 1e3:g} mm at {rig.setup.omega:.3g} rad/s; "
     f"{cam.fps:g} frames/s, {cam.noise * 1e3:g} mm noise, {cam.duration:g} s",
     fontsize=8,
 )

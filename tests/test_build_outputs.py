@@ -47,10 +47,6 @@ def paper_tree(clean_build: Path, tmp_path_factory: pytest.TempPathFactory) -> P
     )
     (tree / "results").mkdir()
     shutil.copy2(clean_build / "results/claims.json", tree / "results/claims.json")
-    # what the section "What a film can tell" reads (FILM_RESULTS of workflow/rules/film.smk)
-    (tree / "results" / "film").mkdir()
-    for path in (clean_build / "results" / "film").glob("*.json"):
-        shutil.copy2(path, tree / "results" / "film" / path.name)
     # As scripts/build_paper.py writes it; a made-up commit, distinct from the claims report's.
     record = provenance(ROOT) | {"git_commit": BUILT_FROM, "git_dirty": True}
     build = {"provenance": record, "repository": config["paper"]["repository"]}
@@ -148,58 +144,19 @@ def test_appendix_typesets_the_registry_mathematics(paper_tree: Path) -> None:
     assert any("e⌃2π ≈ 535" in html.unescape(p) for p in paragraphs)
 
 
-def _film_section(tree: Path) -> str:
-    """The film section compiled alone (with the article's helpers) to HTML, as text."""
+def test_article_body_fits_eight_pages_and_the_whole_twelve(paper_tree: Path) -> None:
+    """The body (up to the references, label <body-end>) takes at most eight pages; with the
+    appendix of claims, at most twelve."""
     import typst
 
-    doc = tree / "paper" / "film_only.typ"
-    # the heading the section refers to, then the section
-    doc.write_text(
-        '#set heading(numbering: "1.")\n= Slipping or rolling resistance? <sec-comparison>\n'
-        '#include "film.typ"\n',
-        encoding="utf-8",
-    )
-    page = typst.compile(str(doc), root=str(tree), format="html").decode()
-    text = " ".join(html.unescape(re.sub(r"<[^>]+>", " ", page)).split())
-    return text.replace("( ", "(").replace(" )", ")")
+    main = str(paper_tree / "paper" / "paper.typ")
 
+    def page(label: str) -> int:
+        return json.loads(typst.query(main, label, field="value", one=True, root=str(paper_tree)))
 
-def test_film_section_prints_the_numbers_of_the_results(paper_tree: Path, tmp_path: Path) -> None:
-    """The section prints what the JSON files hold: with made-up values put into them, the
-    compiled text shows those values; the films are marked synthetic, and a fit not marked
-    synthetic stops the build."""
-    tree = Path(shutil.copytree(paper_tree, tmp_path / "tree"))
-    folder = tree / "results" / "film"
-    truth = json.loads((folder / "synthetic.json").read_text())
-    name, spec = next(iter(truth["films"].items()))
-    key = {"slipping": "mu0", "rolling_resistance": "delta"}[spec["model"]]
-    real = json.loads((folder / f"{name}.json").read_text())
-    text = _film_section(tree)
-    assert "SYNTHETIC" in text
-    assert "What a film can tell" in text
-    # the numbers of the build are there, as the section formats them
-    rms = real[spec["model"]]["rms_residual_m"] * 1000
-    assert f"{rms:.2g} mm" in text, text
-    made_up = json.loads((folder / f"{name}.json").read_text())
-    entry = made_up[spec["model"]]
-    entry.update({key: 2.5, f"{key}_stderr": 0.25, f"{key}_ci95": [1.53, 4.08]})
-    entry["rms_residual_m"] = 0.000777
-    made_up["selection"]["aicc_difference"] = 43.0
-    (folder / f"{name}.json").write_text(json.dumps(made_up))
-    measure = json.loads((folder / "measurability.json").read_text())
-    measure["indistinguishable_above_mu0"] = 37.0
-    measure["reliable_relative_error"] = 0.17
-    measure["reliable_mu0_range"] = [1e-3, 6100.0]
-    (folder / "measurability.json").write_text(json.dumps(measure))
-    spec_text = _film_section(tree)
-    for shown in ("2.50 ± 0.25", "1.53 to 4.08", "0.78 mm", "(43)", "> 37", "0.17", "6100"):
-        assert shown in spec_text, (shown, spec_text)
-    made_up["data"]["synthetic"] = False
-    (folder / f"{name}.json").write_text(json.dumps(made_up))
-    import typst
-
-    with pytest.raises(typst.TypstError, match="not marked synthetic"):
-        _film_section(tree)
+    body, pages = page("<body-end>"), page("<last-page>")
+    assert body <= 8
+    assert body < pages <= 12
 
 
 # The fit of the synthetic film in the workflow (turntable fit) -------------------------------

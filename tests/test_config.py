@@ -120,7 +120,8 @@ def test_a_drawn_span_shows_the_growth_and_the_turns(defaults: dict) -> None:
         f"fig3_modal_terms.t_span = [0, 700]: the motion grows by e^({float(s.alpha1):.3g} t), "
         f"more than 1e+06 by the end; expected t_end <= {np.log(1e6) / float(s.alpha1):.4g}"
     ) in checks.problems(config)
-    turns = float(s.beta) * 8.0 / (2 * np.pi)
+    t_start, t_end = defaults["fig3_modal_terms"]["t_span"]
+    turns = float(s.beta) * (t_end - t_start) / (2 * np.pi)
     (line,) = checks.problems(with_values(defaults, "fig3_modal_terms", mu0=[1.0], n_points=10))
     assert f"holds {turns:.4g} turns" in line
     assert f"n_points >= {int(np.ceil(30 * turns)) + 1}" in line

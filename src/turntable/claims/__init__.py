@@ -9,9 +9,10 @@ three-dimensional equations) and decides a verdict from the numbers
 (`VERDICTS`, best to worst):
 
 ``confirmed``
-    the claim holds as stated;
+    the claim holds as stated, whatever the check finds beyond it;
 ``refined``
-    it holds in a narrower or more precise form, stated in ``evidence``;
+    it does not hold as stated, but a narrower or more precise form does,
+    stated in ``evidence``;
 ``corrected``
     a formula the paper prints is wrong, and ``evidence`` states the right one
     (an erratum);
@@ -20,6 +21,9 @@ three-dimensional equations) and decides a verdict from the numbers
     experimental coefficients); never ``confirmed``;
 ``failed``
     the numbers contradict it.
+
+One rule decides between them, `decide`: an addition beyond what the paper
+states never makes a claim ``refined`` when the statement holds as stated.
 
 The registry is the one source of the claims, of their order (the order of
 registration, with the check modules imported in the paper's order, see
@@ -49,6 +53,7 @@ from turntable.claims._core import (
     Verdict,
     Where,
     clean,
+    decide,
     params_schema,
     register,
     registered,
@@ -174,6 +179,7 @@ __all__ = [
     "Verdict",
     "Where",
     "claim_ids",
+    "decide",
     "evaluate",
     "evaluate_all",
     "get",

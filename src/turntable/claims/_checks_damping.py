@@ -14,10 +14,10 @@ from turntable.claims._core import (
     Outcome,
     Where,
     all_within,
+    decide,
     mu0_grid,
     register,
     sig,
-    verdict_from,
 )
 
 
@@ -115,7 +115,7 @@ def _damping(p: dict[str, Any]) -> Outcome:
         "excess_at_smallest_mu0": 1e-3,
         "max_excess_leading_term_error_rel": 1e-3,
     }
-    verdict = "confirmed" if all_within(reproduced, tol) else "failed"
+    verdict = decide(all_within(reproduced, tol))
     evidence = {
         "failed": (
             "The ratio |alpha2|/beta falls to 1 or below somewhere, (2.10) or its closed form "
@@ -251,7 +251,8 @@ def _fast_transient(p: dict[str, Any]) -> Outcome:
         )
         if not all_within(reproduced, {key: {"<": 1.0}})
     }
-    verdict = verdict_from(all_within(reproduced, tol), refined=bool(longer))
+    holds = all_within(reproduced, tol)
+    verdict = decide(holds and not longer, "refined" if holds else "failed")
     if verdict == "refined":
         tol |= longer
         if "last_time_above_threshold_generic_periods" not in longer:

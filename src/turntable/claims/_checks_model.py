@@ -13,6 +13,7 @@ from turntable.claims._core import (
     Outcome,
     Where,
     all_within,
+    decide,
     random_states,
     register,
     sig,
@@ -98,7 +99,7 @@ def _model_reduction(p: dict[str, Any]) -> Outcome:
     }
     ok = all_within(reproduced, tol)
     return Outcome(
-        verdict="confirmed" if ok else "failed",
+        verdict=decide(ok),
         reproduced=reproduced,
         tolerance=tol,
         summary=(
@@ -161,7 +162,7 @@ def _model_rubber_ball(p: dict[str, Any]) -> Outcome:
     }
     ok = all_within(reproduced, tol)
     return Outcome(
-        verdict="confirmed" if ok else "failed",
+        verdict=decide(ok),
         reproduced=reproduced,
         tolerance=tol,
         summary=(

@@ -10,7 +10,7 @@ import scipy.linalg
 import turntable as tt
 from turntable import reference as ref
 from turntable.claims import _constrained as con
-from turntable.claims._core import Outcome, Where, all_within, random_states, register, sig
+from turntable.claims._core import Outcome, Where, all_within, decide, random_states, register, sig
 
 
 def _slow_projector(big: np.ndarray, mu: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -49,12 +49,12 @@ def _slow_projector(big: np.ndarray, mu: float) -> tuple[np.ndarray, np.ndarray,
         "and the motion on it without contact force stay, and the growth rate on the slow "
         "subspace (40-digit alpha1). The time-domain convergence itself is limit.convergence."
     ),
-    expected="refined",
-    decisive="slow_growth_rate",
+    expected="confirmed",
+    decisive="dynamics_order",
     gist=(
-        "infinite friction realises the constraint as a singular limit that selects the "
-        "nonholonomic motion from the rolling state with the same position and angular "
-        "momentum, on intervals short compared with 1/alpha1"
+        "infinite friction realises the constraint: the slipping ball's slow dynamics tends to "
+        "the nonholonomic one, from the rolling state with the same position and angular "
+        "momentum"
     ),
 )
 def _realization(p: dict[str, Any]) -> Outcome:
@@ -116,19 +116,17 @@ def _realization(p: dict[str, Any]) -> Outcome:
         "other_limits": {">=": 0.1},
         "package": 1e-12,
     }
-    converges = all_within(reproduced, tol)
-    grows = growth_min > 0.0
-    verdict = "failed" if not converges else ("refined" if grows else "confirmed")
-    if verdict == "refined":  # what makes it refined: the slow subspace still grows
-        tol["slow_growth_rate"] = {">": 0.0}
+    # The paper states the realisation on fixed intervals (its (3.3)); that it is not uniform
+    # in time (the slow subspace still grows) is an addition, bounded like the rest.
+    tol["slow_growth_rate"] = {">": 0.0}
+    verdict = decide(all_within(reproduced, tol))
     evidence = {
         "failed": (
             "The slow dynamics of the slipping ball does not tend to the constrained (no-slip) "
             "dynamics, or the state after the initial layer is not the one with the same "
             "position and angular momentum."
         ),
-        "confirmed": "The slow dynamics tends to rolling without slipping, uniformly in time.",
-        "refined": (
+        "confirmed": (
             "Holds in the sense of a singular limit, on finite time intervals. The slow "
             "invariant subspace of L (kernel and lambda_{1,2}) tends to the constraint "
             f"subspace u = 0 (largest angle ~ mu0^{sig(worst['angle'], 3)}), L on it tends to "
@@ -141,8 +139,9 @@ def _realization(p: dict[str, Any]) -> Outcome:
             f"{sig(others_min, 3)} away). So the limit selects the nonholonomic (not a "
             "projected or free) motion, started after an initial layer of width ~1/mu0 from that "
             "state; in time this is limit.convergence: positions uniformly on [0, T], "
-            "velocities outside the layer. It is not uniform in time: the slow subspace still "
-            f"grows at rate alpha1 > 0 ({sig(growth_k0, 3)} for k = {sig(p['k_paper'])} at "
+            "velocities outside the layer. Added: it is not uniform in time; the slow "
+            f"subspace still grows at rate alpha1 > 0 ({sig(growth_k0, 3)} for k = "
+            f"{sig(p['k_paper'])} at "
             f"mu0 = {sig(mu0s[-1])}; at least {sig(growth_min, 3)} over every k and mu0 "
             "tried), so the "
             "realisation holds on intervals short compared with 1/alpha1 ~ mu0 (k+1)^3/k^3."

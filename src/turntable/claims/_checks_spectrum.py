@@ -9,10 +9,13 @@ import sympy as sp
 
 import turntable as tt
 from turntable import reference as ref
+from turntable.claims._checks_intro import ball_mass, plane_rate
 from turntable.claims._core import (
+    DEFAULT_PARAMS,
     Outcome,
     Where,
     all_within,
+    decide,
     register,
     sig,
 )
@@ -56,7 +59,7 @@ def _char_poly(p: dict[str, Any]) -> Outcome:
     }
     ok = all_within(reproduced, tol)
     return Outcome(
-        verdict="confirmed" if ok else "failed",
+        verdict=decide(ok),
         reproduced=reproduced,
         tolerance=tol,
         summary=(
@@ -72,9 +75,14 @@ def _char_poly(p: dict[str, Any]) -> Outcome:
     )
 
 
-#: A concrete ball and turntable (SI units) for the dimensional form of (2.3): radius [m],
-#: plane rate [rad/s], mass [kg] and inertia ratio; R != 1 and Omega != 1 on purpose.
-DIMENSIONAL_BALL = {"R": 0.0254, "Omega": 3.49, "m": 0.0577}
+#: The example ball and turntable (SI units) for the dimensional form of (2.3), those of
+#: model.scaling (the defaults of its parameters, at the first plane rate): radius [m], plane
+#: rate [rad/s], mass [kg]; R != 1 and Omega != 1.
+DIMENSIONAL_BALL = {
+    "R": DEFAULT_PARAMS["ball_radius"],
+    "Omega": plane_rate(DEFAULT_PARAMS["turntable_rpm"][0]),
+    "m": ball_mass(DEFAULT_PARAMS["ball_radius"], DEFAULT_PARAMS["ball_density"]),
+}
 
 
 def _dimensional_matrix(mu0_dim: float, k: float, ball: dict[str, float]) -> np.ndarray:
@@ -117,12 +125,11 @@ def _dimensional_matrix(mu0_dim: float, k: float, ball: dict[str, float]) -> np.
         "Compute L e1, L e2 and the numerical rank of L; start the exact solution at a point "
         "x_c e1 + y_c e2 and record how far it moves over a time span and its slip velocity. "
         "In dimensional variables (a ball of radius R = "
-        f"{DIMENSIONAL_BALL['R']} m and mass {DIMENSIONAL_BALL['m']} kg on a plane turning at "
-        f"Omega = {DIMENSIONAL_BALL['Omega']} rad/s, mu0_dim = mu0 m Omega), solve the "
-        "dimensional equations (Jacobian built with cross products) for the spin w = S r at "
-        "which a ball at rest at r stays there, and compare S with Omega/R times the identity "
-        "(and with R/Omega, 1 and R Omega, to show the check "
-        "tells them apart)."
+        f"{DIMENSIONAL_BALL['R']:.3g} m and mass {DIMENSIONAL_BALL['m']:.3g} kg on a plane "
+        f"turning at Omega = {DIMENSIONAL_BALL['Omega']:.4g} rad/s, mu0_dim = mu0 m Omega), "
+        "solve the dimensional equations (Jacobian built with cross products) for the spin "
+        "w = S r at which a ball at rest at r stays there, and compare S with Omega/R times "
+        "the identity (and with R/Omega, 1 and R Omega, to show the check tells them apart)."
     ),
 )
 def _kernel(p: dict[str, Any]) -> Outcome:
@@ -177,7 +184,7 @@ def _kernel(p: dict[str, Any]) -> Outcome:
     }
     ok = all_within(reproduced, tol)
     return Outcome(
-        verdict="confirmed" if ok else "failed",
+        verdict=decide(ok),
         reproduced=reproduced,
         tolerance=tol,
         summary=(
@@ -296,7 +303,7 @@ def _roots(p: dict[str, Any]) -> Outcome:
     }
     ok = all_within(reproduced, tol)
     return Outcome(
-        verdict="confirmed" if ok else "failed",
+        verdict=decide(ok),
         reproduced=reproduced,
         tolerance=tol,
         summary=(

@@ -14,6 +14,7 @@ from turntable.claims._core import (
     Outcome,
     Where,
     all_within,
+    decide,
     mu0_grid,
     random_states,
     register,
@@ -106,7 +107,9 @@ def _unstable_focus(p: dict[str, Any]) -> Outcome:
         "decaying_subspace_vs_exp_alpha2_t_rel": 1e-10,
     }
     saddle = all_within(reproduced, saddle_tol)
-    verdict = "failed" if not holds else ("refined" if saddle else "confirmed")
+    # An unstable focus, taken strictly, has no decaying direction: with them, the statement
+    # holds only in a restricted sense.
+    verdict = decide(holds and not saddle, "refined" if holds else "failed")
     if verdict == "refined":
         tol |= saddle_tol
     evidence = {
@@ -202,7 +205,7 @@ def _alpha1_peak(p: dict[str, Any]) -> Outcome:
     }
     ok = all_within(reproduced, tol)
     return Outcome(
-        verdict="confirmed" if ok else "failed",
+        verdict=decide(ok),
         reproduced=reproduced,
         tolerance=tol,
         summary=(
@@ -262,7 +265,7 @@ def _identity(p: dict[str, Any]) -> Outcome:
     }
     ok = all_within(reproduced, tol)
     return Outcome(
-        verdict="confirmed" if ok else "failed",
+        verdict=decide(ok),
         reproduced=reproduced,
         tolerance=tol,
         summary=(

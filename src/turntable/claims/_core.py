@@ -324,11 +324,27 @@ def registered() -> Iterator[Claim]:
     yield from _REGISTRY.values()
 
 
-def verdict_from(ok: bool, refined: bool = False) -> Verdict:
-    """Return ``failed`` unless ``ok``; else ``refined`` or ``confirmed``."""
-    if not ok:
-        return "failed"
-    return "refined" if refined else "confirmed"
+def decide(as_stated: bool, otherwise: Verdict = "failed") -> Verdict:
+    """Return a claim's verdict by the one rule of the registry.
+
+    ``confirmed`` when the paper's statement holds as stated, whatever the check finds
+    beyond it: an addition (a sense of rotation, the sharpness of a bound, a rate the paper
+    does not give) never makes a claim ``refined``. Otherwise ``otherwise``: ``refined``
+    when only a narrower or more precise form holds (for some states, in one of the
+    statement's readings), ``corrected`` when a corrected formula holds, ``undecidable``
+    when the truth depends on values the paper does not give, ``failed`` when the numbers
+    contradict it.
+
+    Examples
+    --------
+    >>> decide(True, otherwise="refined")
+    'confirmed'
+    >>> decide(False, otherwise="refined")
+    'refined'
+    """
+    if otherwise not in VERDICTS or otherwise == "confirmed":
+        raise ValueError(f"otherwise must be a verdict other than 'confirmed'; got {otherwise!r}")
+    return "confirmed" if as_stated else otherwise
 
 
 def sig(x: float, digits: int = 4) -> str:

@@ -363,7 +363,7 @@ def read_film(
 def write_film(
     path: str | os.PathLike[str], film: Film, comments: Sequence[str] = (), digits: int = 10
 ) -> None:
-    """Write ``film`` as CSV (header ``t,x,y``), atomically, after ``# `` comment lines.
+    """Write ``film`` as CSV (header ``t,x,y``), atomically, after ``"# "`` comment lines.
 
     Parameters
     ----------
@@ -372,7 +372,7 @@ def write_film(
     film : Film
         The frames.
     comments : sequence of str
-        Lines written first, each prefixed with ``# ``.
+        Lines written first, each prefixed with ``"# "``.
     digits : int
         Significant digits of each number.
     """

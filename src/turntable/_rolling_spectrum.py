@@ -9,7 +9,7 @@ from __future__ import annotations
 from typing import NamedTuple
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 from turntable import _validate
 
@@ -84,3 +84,83 @@ def _spectrum_rolling(delta: NDArray[np.float64], k: NDArray[np.float64]) -> Rol
     sigma_c = -(delta + p) / (2.0 * (k + 1.0))
     nu_c = -4.0 * d * d / (a * (q + k))
     return RollingSpectrum(sigma_g, nu_g, sigma_c, nu_c)
+
+
+def spectrum(delta: ArrayLike, k: ArrayLike) -> RollingSpectrum:
+    """Return sigma_g, nu_g, sigma_c, nu_c of the rolling model.
+
+    Parameters
+    ----------
+    delta, k : float or array_like
+        Rolling-resistance coefficient and inertia ratio, finite and > 0;
+        broadcast against each other.
+
+    Returns
+    -------
+    RollingSpectrum
+
+    Notes
+    -----
+    The closed forms of the module docstring (roots of
+    (k+1) lambda^2 + (delta - i k) lambda - i delta), each a quotient of
+    positive numbers, accurate to a few units in the last place.
+    """
+    delta = _validate.positive("delta", delta)
+    k = _validate.positive("k", k)
+    delta, k = np.broadcast_arrays(delta, k)
+    return _spectrum_rolling(delta, k)
+
+
+def eigenvalues(delta: ArrayLike, k: ArrayLike) -> NDArray[np.complex128]:
+    """Return the four eigenvalues of the real linear system `system_matrix`.
+
+    Returns
+    -------
+    numpy.ndarray
+        Complex, shape ``broadcast(delta, k).shape + (4,)``:
+        (lambda_g, conj lambda_g, lambda_c, conj lambda_c).
+
+    Notes
+    -----
+    See `spectrum` and the module docstring.
+    """
+    s = spectrum(delta, k)
+    out = np.empty((*s.sigma_g.shape, 4), dtype=complex)
+    out[..., 0] = s.sigma_g + 1j * s.nu_g
+    out[..., 1] = s.sigma_g - 1j * s.nu_g
+    out[..., 2] = s.sigma_c + 1j * s.nu_c
+    out[..., 3] = s.sigma_c - 1j * s.nu_c
+    return out
+
+
+def growth_rate(delta: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
+    """Return sigma_g, the growth rate per unit time of the spiral's radius.
+
+    Notes
+    -----
+    sigma_g = 4 delta q / (A (k + 2 + q)) (module docstring);
+    delta / (k (k + 1)) for small delta, about 1 / delta for large delta.
+    """
+    return spectrum(delta, k).sigma_g
+
+
+def log_growth_per_turn(delta: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
+    """Return 2 pi sigma_g / nu_g, the logarithm of the spiral's growth per turn.
+
+    Notes
+    -----
+    About 2 pi delta / k^2 for small delta and 2 pi / delta for large delta.
+    """
+    s = spectrum(delta, k)
+    return 2.0 * np.pi * s.sigma_g / s.nu_g
+
+
+def centre_decay_rate(delta: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
+    """Return |sigma_c|, the rate at which the spiral's centre approaches the axis.
+
+    Notes
+    -----
+    |sigma_c| = (delta + p) / (2 (k + 1)), between delta / (2 (k + 1)) and
+    delta / k; it is the decay rate of the non-growing part of the motion.
+    """
+    return -spectrum(delta, k).sigma_c

@@ -93,6 +93,12 @@ def state_on_constraint(xyv: ArrayLike) -> NDArray[np.float64]:
     Notes
     -----
     (R1): w = r + i v, i.e. wx = x - vy, wy = y + vx.
+
+    Examples
+    --------
+    >>> from turntable import rolling
+    >>> rolling.state_on_constraint([1, 0, 0, 1])
+    array([1., 0., 0., 1., 1., 0.])
     """
     arr = _validate._as_float_array("xyv", xyv, "finite numbers (x, y, vx, vy)")
     if arr.ndim == 0 or arr.shape[-1] != 4 or not np.all(np.isfinite(arr)):
@@ -192,6 +198,16 @@ def modal_terms(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> RollingM
     -----
     A_g = (v0 - lambda_c r0) / (lambda_g - lambda_c),
     A_c = (lambda_g r0 - v0) / (lambda_g - lambda_c) (module docstring).
+
+    Examples
+    --------
+    The spiral and its centre add up to the motion:
+
+    >>> from turntable import rolling
+    >>> z0, t = rolling.state_on_constraint([0, 0, 1, 0]), [0.0, 1.0, 10.0]
+    >>> parts = rolling.modal_terms(z0, t, 0.1, 0.4)
+    >>> bool(abs(parts.spiral + parts.centre - rolling.solve(z0, t, 0.1, 0.4)).max() < 1e-14)
+    True
     """
     t = _validate.times("t", t)
     m = _modes(z0, delta, k)
@@ -235,6 +251,17 @@ def solve(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> NDArray[np.flo
     Notes
     -----
     r(t) = A_g e^{lambda_g t} + A_c e^{lambda_c t}, v = dr/dt, w = r + i v.
+
+    Examples
+    --------
+    The ball stays on the constraint (no slip):
+
+    >>> import numpy as np
+    >>> from turntable import rolling
+    >>> z0 = rolling.state_on_constraint([0, 0, 1, 0])
+    >>> z = rolling.solve(z0, np.linspace(0.0, 10.0, 3), 0.1, 0.4)
+    >>> bool(abs(rolling.slip_velocity(z)).max() < 1e-14)
+    True
     """
     spiral, centre = modal_terms(z0, t, delta, k)
     return spiral + centre
@@ -247,6 +274,16 @@ def spiral_centre(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> NDArra
     -----
     r_c(t) = A_c e^{lambda_c t}: it moves, spiralling into the turntable's
     axis at the rate |sigma_c| (`centre_decay_rate`).
+
+    Examples
+    --------
+    The centre moves from its start towards the axis:
+
+    >>> from turntable import rolling
+    >>> z0 = rolling.state_on_constraint([0, 0, 1, 0])
+    >>> rolling.spiral_centre(z0, [0.0, 10.0], 0.1, 0.4).round(3)
+    array([[-1.169,  1.591],
+           [-0.007,  0.308]])
     """
     return modal_terms(z0, t, delta, k).centre[:, :2]
 
@@ -271,6 +308,15 @@ def matched_delta(mu0: ArrayLike, k: ArrayLike, comparison: str) -> NDArray[np.f
     -------
     numpy.ndarray
         delta, of the broadcast shape of mu0 and k.
+
+    Examples
+    --------
+    >>> from turntable import rolling
+    >>> for comparison in rolling.COMPARISONS:
+    ...     print(comparison, rolling.matched_delta([0.1, 1.0], 0.4, comparison).round(4))
+    equal_coefficient [0.1 1. ]
+    equal_power [0.0296 0.0124]
+    equal_decay [0.3348 4.6981]
     """
     if comparison not in COMPARISONS:
         raise ValueError(f"comparison must be one of {COMPARISONS}; got {comparison!r}")
@@ -291,6 +337,17 @@ def growth_per_turn_ratio(mu0: ArrayLike, k: ArrayLike, comparison: str) -> NDAr
     (2 pi alpha1 / beta)(mu0) / (2 pi sigma_g / nu_g)(delta), delta =
     `matched_delta` (mu0, k, comparison).  Limits for large mu0:
     k^2 / (k + 1)^2 (a), 1 (b), k (c).
+
+    Examples
+    --------
+    Above 1 where the slipping spiral untwists faster per turn:
+
+    >>> from turntable import rolling
+    >>> for comparison in rolling.COMPARISONS:
+    ...     print(comparison, rolling.growth_per_turn_ratio([0.1, 1.0], 0.4, comparison).round(3))
+    equal_coefficient [1.342 0.211]
+    equal_power [2.721 1.06 ]
+    equal_decay [1.056 0.443]
     """
     from turntable.spectrum import log_growth_per_turn as slipping_growth
 
@@ -357,6 +414,17 @@ def newton_euler(
     solves the 3x3 linear system obtained by differentiating (R1),
     dv/dt + gamma x dw/dt - gamma x v = 0, with dv/dt = F - g gamma and
     k dw/dt = -gamma x F + M.  Nothing of the reduction (R4) is used.
+
+    Examples
+    --------
+    The constrained 3-D equations agree with the closed form:
+
+    >>> import numpy as np
+    >>> from turntable import rolling
+    >>> z0, t = rolling.state_on_constraint([0, 0, 1, 0]), np.linspace(0.0, 2.0, 5)
+    >>> result = rolling.newton_euler(z0, t, 0.1, 0.4)
+    >>> bool(abs(result.z - rolling.solve(z0, t, 0.1, 0.4)).max() < 1e-9)
+    True
     """
     if torque not in TORQUES:
         raise ValueError(f"torque must be one of {TORQUES}; got {torque!r}")

@@ -36,7 +36,7 @@ API_MODULES = [
     "turntable.claims",
     "turntable.config",
 ]
-numpydoc_validation_checks: set[str] = set()
+numpydoc_validation_checks = {"EX01"}
 
 
 def _public_functions(module_name):

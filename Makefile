@@ -1,6 +1,7 @@
 # make        set up .venv (pinned) and build everything with Snakemake
 # make test   set up .venv (pinned) and run the test suite
-# make notebooks / make report / make readme-figure   see README.md
+# make docs   the documentation site, docs/_build/html/index.html
+# make notebooks / make report / make readme-figure   see the documentation
 # make CONFIGFILE=my.yaml   build with the values of my.yaml over config/config.yaml
 PYTHON ?= python3
 VENV := .venv
@@ -15,6 +16,7 @@ BIN := $(VENV)/bin
 unexport PYTHONDONTWRITEBYTECODE
 BUILD_STAMP := $(VENV)/.installed-build
 STAMP := $(VENV)/.installed
+DOCS_STAMP := $(VENV)/.installed-docs
 PIP_INSTALL := PIP_CONSTRAINT=constraints.txt $(BIN)/python -m pip install --quiet \
 	--disable-pip-version-check --no-compile
 CORES ?= all
@@ -24,7 +26,8 @@ CORES ?= all
 READ_CONFIG = $(BIN)/python -c 'import sys, yaml; sys.excepthook = lambda t, e, tb: print(f"{sys.argv[1]}: {e}", file=sys.stderr); yaml.safe_load(open(sys.argv[1]))'
 SNAKEMAKE = $(if $(CONFIGFILE),$(READ_CONFIG) $(CONFIGFILE) && )$(BIN)/snakemake$(if $(CONFIGFILE), --configfile $(CONFIGFILE))
 
-.PHONY: all setup test lint bench mutants lock clean notebooks report readme-figure cluster-test
+.PHONY: all setup test lint bench mutants lock clean notebooks report readme-figure docs \
+	cluster-test
 
 # The HTML report is rewritten only when a file it is made from is newer than it (an output
 # it shows, a caption of workflow/report/, a rule or script, the configuration), so that a second
@@ -54,7 +57,7 @@ report: $(BUILD_STAMP)
 readme-figure: $(BUILD_STAMP)
 	$(SNAKEMAKE) --cores $(CORES) readme_figure
 
-setup: $(STAMP)
+setup: $(STAMP) $(DOCS_STAMP)
 
 $(BUILD_STAMP): pyproject.toml constraints.txt
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -65,8 +68,16 @@ $(STAMP): $(BUILD_STAMP)
 	$(PIP_INSTALL) -e ".[workflow,test,dev,notebooks]"
 	touch $(STAMP)
 
+$(DOCS_STAMP): $(BUILD_STAMP)
+	$(PIP_INSTALL) -e ".[workflow,notebooks,docs]"
+	touch $(DOCS_STAMP)
+
 test: $(STAMP)
 	$(BIN)/python -m pytest -n 2
+
+# The documentation site from docs/ (guides and the API reference), offline; a warning fails it.
+docs: $(DOCS_STAMP)
+	$(BIN)/sphinx-build -M html docs docs/_build -E -W --keep-going -q
 
 lint: $(STAMP)
 	$(BIN)/ruff check src tests benchmarks scripts workflow tools
@@ -94,11 +105,11 @@ cluster-test: $(STAMP)
 # Re-resolve the newest versions into constraints.txt (needs the network).
 lock:
 	rm -rf .lockvenv && $(PYTHON) -m venv .lockvenv
-	.lockvenv/bin/pip install --quiet ".[workflow,test,dev,notebooks,slurm]"
+	.lockvenv/bin/pip install --quiet ".[workflow,test,dev,notebooks,docs,slurm]"
 	{ echo "# Exact versions of every package the project installs (pip constraints)."; \
 	  echo "# Regenerate: make lock"; \
 	  .lockvenv/bin/pip freeze --all --exclude-editable | grep -v -e '^turntable' -e '^pip=='; } > constraints.txt
 	rm -rf .lockvenv
 
 clean:
-	rm -rf figures results logs .snakemake paper/paper.pdf
+	rm -rf figures results logs .snakemake paper/paper.pdf docs/_build

@@ -23,6 +23,12 @@ def power_rolling(z: ArrayLike, delta: float) -> NDArray[np.float64]:
     Notes
     -----
     (R3): -M . w = delta (wx^2 + wy^2), in units m R^2 Omega^3.
+
+    Examples
+    --------
+    >>> from turntable import rolling
+    >>> rolling.power_rolling([[0, 0, 1, 0, 0, 1], [0, 0, 1, 0, 2, 0]], 0.1)
+    array([0.1, 0.4])
     """
     z = _validate.states("z", z)
     delta = _validate.positive_scalar("delta", delta)
@@ -36,6 +42,14 @@ def power_slipping(z: ArrayLike, mu0: float) -> NDArray[np.float64]:
     -----
     Section 1 of the paper: F = -mu0 u at the contact point, which slides
     with u relative to the plane; in units m R^2 Omega^3.
+
+    Examples
+    --------
+    A slip of speed 2 at mu0 = 0.5:
+
+    >>> from turntable import rolling
+    >>> print(rolling.power_slipping([0, 0, 2, 0, 0, 0], 0.5))
+    2.0
     """
     z = _validate.states("z", z)
     mu0 = _validate.positive_scalar("mu0", mu0)
@@ -104,6 +118,12 @@ def equal_power_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
     delta_P ~ k^4 / (mu0 (k + 1)^2) as mu0 -> infinity, where the slipping
     motion becomes the no-slip one and both spins agree.  `own_spin_power_delta`
     is the alternative that charges the torque on the slipping ball's own spin.
+
+    Examples
+    --------
+    >>> from turntable import rolling
+    >>> print(f"{rolling.equal_power_delta(1.0, 0.4):.6f}")
+    0.012428
     """
     mu0, k, alpha1, beta, y = _slipping_mode(mu0, k)
     num = np.hypot((k + 1.0) * alpha1, y)
@@ -135,6 +155,12 @@ def own_spin_power_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
     the slip does not), delta_S ~ k^4 / (mu0 (k + 1)^2) as mu0 -> infinity (as
     `equal_power_delta`).  Same evaluation as `equal_power_delta`, with
     |lambda_+| = beta |1 + i alpha1 / beta|.
+
+    Examples
+    --------
+    >>> from turntable import rolling
+    >>> print(f"{rolling.own_spin_power_delta(1.0, 0.4):.6f}")
+    0.012812
     """
     mu0, k, alpha1, beta, y = _slipping_mode(mu0, k)
     num = np.hypot((k + 1.0) * alpha1, y)
@@ -165,6 +191,16 @@ def equal_decay_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
     [k |alpha2| / 2, 4 (k + 1) |alpha2|], where the function changes sign by at
     least a half at either end, and finds it to a relative 1e-15.  Large mu0:
     delta ~ mu0 (k+1)^2 / k; small mu0: delta ~ k |alpha2| ~ k sqrt(mu0 / 2).
+
+    Examples
+    --------
+    The rolling centre then decays at the slipping |alpha2|:
+
+    >>> from turntable import rolling, spectrum
+    >>> delta = rolling.equal_decay_delta(1.0, 0.4)
+    >>> rate, alpha2 = rolling.centre_decay_rate(delta, 0.4), spectrum(1.0, 0.4).alpha2
+    >>> print(f"{delta:.6f} {rate:.6f} {-alpha2:.6f}")
+    4.698148 3.522587 3.522587
     """
     from scipy.optimize import brentq
 

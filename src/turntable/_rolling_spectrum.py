@@ -9,7 +9,7 @@ from __future__ import annotations
 from typing import NamedTuple
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 from turntable import _validate
 
@@ -36,6 +36,16 @@ def system_matrix(delta: float, k: float) -> NDArray[np.float64]:
         M = [[0, I], [delta J / (k + 1), (k J - delta I) / (k + 1)]]
 
     with J = [[0, -1], [1, 0]]; w = r + J v follows from the constraint.
+
+    Examples
+    --------
+    Its eigenvalues are `eigenvalues`:
+
+    >>> import numpy as np
+    >>> from turntable import rolling
+    >>> lam = np.linalg.eigvals(rolling.system_matrix(0.1, 0.4))
+    >>> bool(np.allclose(np.sort_complex(lam), np.sort_complex(rolling.eigenvalues(0.1, 0.4))))
+    True
     """
     delta = _validate.positive_scalar("delta", delta)
     k = _validate.positive_scalar("k", k)
@@ -84,3 +94,123 @@ def _spectrum_rolling(delta: NDArray[np.float64], k: NDArray[np.float64]) -> Rol
     sigma_c = -(delta + p) / (2.0 * (k + 1.0))
     nu_c = -4.0 * d * d / (a * (q + k))
     return RollingSpectrum(sigma_g, nu_g, sigma_c, nu_c)
+
+
+def spectrum(delta: ArrayLike, k: ArrayLike) -> RollingSpectrum:
+    """Return sigma_g, nu_g, sigma_c, nu_c of the rolling model.
+
+    Parameters
+    ----------
+    delta, k : float or array_like
+        Rolling-resistance coefficient and inertia ratio, finite and > 0;
+        broadcast against each other.
+
+    Returns
+    -------
+    RollingSpectrum
+
+    Notes
+    -----
+    The closed forms of the module docstring (roots of
+    (k+1) lambda^2 + (delta - i k) lambda - i delta), each a quotient of
+    positive numbers, accurate to a few units in the last place.
+
+    Examples
+    --------
+    >>> from turntable import rolling
+    >>> s = rolling.spectrum(0.1, 0.4)
+    >>> print(f"sigma_g = {s.sigma_g:.6f}, nu_g = {s.nu_g:.6f}, sigma_c = {s.sigma_c:.6f}")
+    sigma_g = 0.114305, nu_g = 0.346912, sigma_c = -0.185734
+    """
+    delta = _validate.positive("delta", delta)
+    k = _validate.positive("k", k)
+    delta, k = np.broadcast_arrays(delta, k)
+    return _spectrum_rolling(delta, k)
+
+
+def eigenvalues(delta: ArrayLike, k: ArrayLike) -> NDArray[np.complex128]:
+    """Return the four eigenvalues of the real linear system `system_matrix`.
+
+    Returns
+    -------
+    numpy.ndarray
+        Complex, shape ``broadcast(delta, k).shape + (4,)``:
+        (lambda_g, conj lambda_g, lambda_c, conj lambda_c).
+
+    Notes
+    -----
+    See `spectrum` and the module docstring.
+
+    Examples
+    --------
+    The growing pair first, then the centre's decaying pair:
+
+    >>> from turntable import rolling
+    >>> rolling.eigenvalues(0.1, 0.4).round(6)
+    array([ 0.114305+0.346912j,  0.114305-0.346912j, -0.185734-0.061198j,
+           -0.185734+0.061198j])
+    """
+    s = spectrum(delta, k)
+    out = np.empty((*s.sigma_g.shape, 4), dtype=complex)
+    out[..., 0] = s.sigma_g + 1j * s.nu_g
+    out[..., 1] = s.sigma_g - 1j * s.nu_g
+    out[..., 2] = s.sigma_c + 1j * s.nu_c
+    out[..., 3] = s.sigma_c - 1j * s.nu_c
+    return out
+
+
+def growth_rate(delta: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
+    """Return sigma_g, the growth rate per unit time of the spiral's radius.
+
+    Notes
+    -----
+    sigma_g = 4 delta q / (A (k + 2 + q)) (module docstring);
+    delta / (k (k + 1)) for small delta, about 1 / delta for large delta.
+
+    Examples
+    --------
+    About delta / (k (k + 1)) for small delta:
+
+    >>> from turntable import rolling
+    >>> rolling.growth_rate([1e-4, 0.1], 0.4).round(6)
+    array([0.000179, 0.114305])
+    """
+    return spectrum(delta, k).sigma_g
+
+
+def log_growth_per_turn(delta: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
+    """Return 2 pi sigma_g / nu_g, the logarithm of the spiral's growth per turn.
+
+    Notes
+    -----
+    About 2 pi delta / k^2 for small delta and 2 pi / delta for large delta.
+
+    Examples
+    --------
+    About 2 pi delta / k^2 for small delta, 2 pi / delta for large delta:
+
+    >>> from turntable import rolling
+    >>> print(rolling.log_growth_per_turn([1e-4, 1e4], 0.4))
+    [0.003927 0.0006283]
+    """
+    s = spectrum(delta, k)
+    return 2.0 * np.pi * s.sigma_g / s.nu_g
+
+
+def centre_decay_rate(delta: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
+    """Return |sigma_c|, the rate at which the spiral's centre approaches the axis.
+
+    Notes
+    -----
+    |sigma_c| = (delta + p) / (2 (k + 1)), between delta / (2 (k + 1)) and
+    delta / k; it is the decay rate of the non-growing part of the motion.
+
+    Examples
+    --------
+    Between delta / (2 (k + 1)) and delta / k:
+
+    >>> from turntable import rolling
+    >>> print(f"{rolling.centre_decay_rate(0.1, 0.4):.6f}")
+    0.185734
+    """
+    return -spectrum(delta, k).sigma_c

@@ -76,6 +76,18 @@ def validate(config: dict[str, Any], schema: str | Path) -> list[str]:
     """Fill in the defaults of `config` from `schema` and return one line per problem.
 
     Each line is the key's path (``section.key[i]``) and what is expected.
+
+    Examples
+    --------
+    From the repository's root:
+
+    >>> from turntable.config import validate
+    >>> schema = "workflow/schemas/config.schema.yaml"
+    >>> validate({"fig2_spectrum": {"n_points": 400.0}}, schema)
+    ["fig2_spectrum.n_points: 400.0 is not of type 'integer'"]
+    >>> config = {}
+    >>> validate(config, schema), config["fig3_modal_terms"]["t_span"]
+    ([], [0.0, 8.0])
     """
     lines = []
     for error in sorted(
@@ -91,7 +103,17 @@ def validate(config: dict[str, Any], schema: str | Path) -> list[str]:
 
 def problems(config: Mapping[str, Any]) -> list[str]:
     """Return one line per problem of a configuration that passed `validate`: the key
-    (``section.key[i]``) and what is expected."""
+    (``section.key[i]``) and what is expected.
+
+    Examples
+    --------
+    >>> from turntable.config import problems, validate
+    >>> config = {"fig3_modal_terms": {"t_span": [5.0, 1.0]}}
+    >>> validate(config, "workflow/schemas/config.schema.yaml")
+    []
+    >>> problems(config)
+    ['fig3_modal_terms.t_span = [5.0, 1.0]: expected [start, end] with start < end']
+    """
     found = list(_order(config))
     if not found:
         found = _film(config) + [p for spec in SPANS for p in _spans(config, *spec)]

@@ -111,12 +111,30 @@ class Camera(NamedTuple):
 
 
 def rpm_to_omega(rpm: float) -> float:
-    """Return the angular velocity in rad/s of ``rpm`` revolutions per minute (2 pi rpm / 60)."""
+    """Return the angular velocity in rad/s of ``rpm`` revolutions per minute (2 pi rpm / 60).
+
+    Examples
+    --------
+    >>> from turntable.film import rpm_to_omega
+    >>> print(f"{rpm_to_omega(33.3):.4f} rad/s")
+    3.4872 rad/s
+    """
     return 2.0 * math.pi * _validate.positive_scalar("rpm", rpm) / 60.0
 
 
 def check_setup(setup: Setup) -> Setup:
-    """Return ``setup`` with its numbers validated (ValueError naming a bad one)."""
+    """Return ``setup`` with its numbers validated (ValueError naming a bad one).
+
+    Examples
+    --------
+    >>> from turntable.film import Setup, check_setup
+    >>> check_setup(Setup(radius=0.005, omega=3.5))
+    Setup(radius=0.005, omega=3.5, k=0.4, axis=(0.0, 0.0))
+    >>> check_setup(Setup(radius=-0.005, omega=3.5))
+    Traceback (most recent call last):
+    ...
+    ValueError: radius must be ...
+    """
     radius = _validate.positive_scalar("radius", setup.radius)
     omega = _validate.positive_scalar("omega", setup.omega)
     k = _validate.positive_scalar("k", setup.k)
@@ -127,7 +145,14 @@ def check_setup(setup: Setup) -> Setup:
 
 
 def frame_times(camera: Camera) -> NDArray[np.float64]:
-    """Return the times i / fps of the frames in [0, duration], s."""
+    """Return the times i / fps of the frames in [0, duration], s.
+
+    Examples
+    --------
+    >>> from turntable.film import Camera, frame_times
+    >>> frame_times(Camera(fps=4.0, noise=2e-4, duration=1.0))
+    array([0.  , 0.25, 0.5 , 0.75, 1.  ])
+    """
     fps = _validate.positive_scalar("fps", camera.fps)
     duration = _validate.positive_scalar("duration", camera.duration)
     return np.arange(math.floor(duration * fps * (1.0 + 1e-12)) + 1) / fps
@@ -162,6 +187,15 @@ def state_from_si(
     The paper's units (Section 1): length R, time 1/Omega; the spin w is in units of
     Omega, so that the slip velocity is u = v + gamma x w - gamma x r (the no-slip
     constraint of a ball on a plane turning at rate 1).
+
+    Examples
+    --------
+    In units of R and 1/Omega: 5 cm from the axis is 10 radii of a 1 cm ball:
+
+    >>> from turntable.film import Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=2.0)
+    >>> state_from_si([0.05, 0.0], [0.0, 0.01], [0.0, 0.0], setup)
+    array([10.,  0.,  0.,  1.,  0.,  0.])
     """
     setup = check_setup(setup)
     out = np.empty(6)
@@ -183,6 +217,14 @@ def state_to_si(state: ArrayLike, setup: Setup) -> dict[str, list[float]]:
     """Return the dimensionless state as position (m), velocity (m/s), spin (rad/s).
 
     The inverse of `state_from_si`.
+
+    Examples
+    --------
+    The inverse of `state_from_si`:
+
+    >>> from turntable.film import Setup, state_to_si
+    >>> state_to_si([10, 0, 0, 1, 0, 0], Setup(radius=0.005, omega=2.0))
+    {'position_m': [0.05, 0.0], 'velocity_m_s': [0.0, 0.01], 'spin_rad_s': [0.0, 0.0]}
     """
     setup = check_setup(setup)
     z = _validate.state("state", state)
@@ -216,6 +258,16 @@ def rig_from_config(section: Mapping[str, Any]) -> Rig:
     -------
     Rig
         ``state0`` is the dimensionless start (`state_from_si`) of the slipping ball.
+
+    Examples
+    --------
+    >>> from turntable.film import rig_from_config
+    >>> rig = rig_from_config({
+    ...     "radius_m": 0.005, "mass_kg": 0.00411, "k": 0.4, "rpm": 33.3, "axis_m": [0, 0],
+    ...     "fps": 240.0, "noise_m": 2e-4, "duration_s": 10.0, "start_position_m": [0.05, 0],
+    ...     "start_velocity_m_s": [0, 0], "start_spin_rad_s": [0, 0]})
+    >>> rig.camera, rig.state0
+    (Camera(fps=240.0, noise=0.0002, duration=10.0), array([10.,  0.,  0.,  0.,  0.,  0.]))
     """
     axis = section["axis_m"]
     setup = check_setup(
@@ -280,6 +332,21 @@ def read_film(
         increase, a value outside ``bounds``, or fewer than ``min_rows`` frames.  The
         message starts with ``<file>:<line>:`` and names the column and its field number
         where there is one.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> from turntable.film import read_film
+    >>> path = os.path.join(tempfile.mkdtemp(), "film.csv")
+    >>> lines = ["# tracked by hand", "t;x;y;quality", "0;0.05;0;1", "0.1;0.049;0.017;1"]
+    >>> with open(path, "w") as f:
+    ...     _ = f.write(os.linesep.join(lines))
+    >>> read_film(path)
+    Film(t=array([0. , 0.1]), x=array([0.05 , 0.049]), y=array([0.   , 0.017]), synthetic=False)
+    >>> read_film(path, min_rows=15, why="for a fit")
+    Traceback (most recent call last):
+    ...
+    turntable.film.FilmError: ...film.csv:4: 2 frames (lines 3-4); need at least 15 (for a fit)
     """
     name = os.fspath(path)
     try:
@@ -363,7 +430,7 @@ def read_film(
 def write_film(
     path: str | os.PathLike[str], film: Film, comments: Sequence[str] = (), digits: int = 10
 ) -> None:
-    """Write ``film`` as CSV (header ``t,x,y``), atomically, after ``# `` comment lines.
+    """Write ``film`` as CSV (header ``t,x,y``), atomically, after ``"# "`` comment lines.
 
     Parameters
     ----------
@@ -372,9 +439,25 @@ def write_film(
     film : Film
         The frames.
     comments : sequence of str
-        Lines written first, each prefixed with ``# ``.
+        Lines written first, each prefixed with ``"# "``.
     digits : int
         Significant digits of each number.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> from turntable.film import Film, read_film, write_film
+    >>> path = os.path.join(tempfile.mkdtemp(), "film.csv")
+    >>> write_film(path, Film([0.0, 0.1], [0.05, 0.049], [0.0, 0.017]), ["SYNTHETIC example"])
+    >>> with open(path) as f:
+    ...     print(f.read())
+    # SYNTHETIC example
+    t,x,y
+    0,0.05,0
+    0.1,0.049,0.017
+    <BLANKLINE>
+    >>> read_film(path).synthetic
+    True
     """
     path = Path(path)
     lines = [f"# {c}" for c in comments] + ["t,x,y"]

@@ -36,6 +36,15 @@ def small_friction_expansion(mu0: ArrayLike, k: ArrayLike) -> Expansion:
     b = sqrt(eps/2) (1 - 1/(2 eps) + O(eps^-2)) and mu sqrt(eps/2) = sqrt(mu0/2),
     so each returned value has an error O(mu0^(3/2)).  To leading order all three
     rates are sqrt(mu0/2) in size.
+
+    Examples
+    --------
+    Against the exact roots at mu0 = 1e-3:
+
+    >>> from turntable import small_friction_expansion, spectrum
+    >>> approx, exact = small_friction_expansion(1e-3, 0.4), spectrum(1e-3, 0.4)
+    >>> print(f"{approx.beta:.5f} {exact.beta:.5f}")
+    0.02236 0.02233
     """
     mu0 = _validate.positive("mu0", mu0)
     k = _validate.positive("k", k)
@@ -57,6 +66,12 @@ def nonholonomic_period(k: ArrayLike) -> NDArray[np.float64]:
     -----
     Equation (3.3): without slip the centre circles about (x0, y0) of (2.8)
     at the constant rate k / (k + 1) (2/7 of the plane's rate for k = 2/5).
+
+    Examples
+    --------
+    >>> from turntable import nonholonomic_period
+    >>> print(f"{nonholonomic_period(0.4):.6f}")
+    21.991149
     """
     k = _validate.positive("k", k)
     return 2.0 * np.pi * (k + 1.0) / k
@@ -86,6 +101,16 @@ def limit_error(z0: ArrayLike, t: ArrayLike, mu0: ArrayLike, k: float) -> NDArra
     -----
     Section 3, (3.3): on a fixed interval the solution tends to the no-slip one
     started from `no_slip_state` (z0); the position error is O(1/mu0).
+
+    Examples
+    --------
+    The error falls like 1/mu0:
+
+    >>> import numpy as np
+    >>> from turntable import limit_error
+    >>> t = np.linspace(0.0, 5.0, 51)
+    >>> limit_error([0, 0, 1, 0, 0, 0], t, [100.0, 1000.0], 0.4).round(5)
+    array([0.00303, 0.0003 ])
     """
     t = _validate.times("t", t)
     mu0 = _validate.positive("mu0", mu0)
@@ -145,6 +170,13 @@ def limit_error_fit(z0: ArrayLike, t_end: float, mu0: ArrayLike, k: float) -> Li
     ln e = ln c + p ln mu0 over the given mu0.  Section 3: p -> -1 (positions converge
     uniformly on a fixed interval at rate O(1/mu0)).  The one fit of the order that
     the claim ``limit.convergence`` reports for the paper's ball and Fig. 6(b) draws.
+
+    Examples
+    --------
+    >>> from turntable import limit_error_fit
+    >>> fit = limit_error_fit([0, 0, 1, 0, 0, 0], 5.0, [100.0, 1000.0], 0.4)
+    >>> print(f"order {fit.order:.3f}, prefactor {fit.prefactor:.3f}")
+    order -1.000, prefactor 0.303
     """
     z0 = _validate.state("z0", z0)
     t_end = _validate.positive_scalar("t_end", t_end)

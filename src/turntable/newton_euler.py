@@ -93,6 +93,17 @@ def newton_euler(
 
     with g_vec = -g gamma and N = N gamma the reaction that keeps the ball on
     the plane: d^2 z / dt^2 = 0 gives N = g + mu0 u . gamma.
+
+    Examples
+    --------
+    The full 3-D equations agree with the closed form of the planar motion:
+
+    >>> import numpy as np
+    >>> from turntable import newton_euler, solve
+    >>> z0, t = [0, 0, 1, 0, 0, 0], np.linspace(0.0, 2.0, 5)
+    >>> result = newton_euler(z0, t, 1.0, 0.4)
+    >>> bool(np.abs(result.z - solve(z0, t, 1.0, 0.4)).max() < 1e-9)
+    True
     """
     z0 = _validate.state("z0", z0)
     t = _validate.times("t", t, increasing=True)

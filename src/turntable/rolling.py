@@ -25,7 +25,16 @@ from turntable._rolling_match import (
     power_rolling,
     power_slipping,
 )
-from turntable._rolling_spectrum import RollingSpectrum, _spectrum_rolling, system_matrix
+from turntable._rolling_spectrum import (
+    RollingSpectrum,
+    _spectrum_rolling,
+    centre_decay_rate,
+    eigenvalues,
+    growth_rate,
+    log_growth_per_turn,
+    spectrum,
+    system_matrix,
+)
 from turntable.solution import slip_velocity
 
 __all__ = [
@@ -68,86 +77,6 @@ SLIP_TOLERANCE = 1e-10
 TORQUES = ("horizontal", "full", "relative")
 
 
-def spectrum(delta: ArrayLike, k: ArrayLike) -> RollingSpectrum:
-    """Return sigma_g, nu_g, sigma_c, nu_c of the rolling model.
-
-    Parameters
-    ----------
-    delta, k : float or array_like
-        Rolling-resistance coefficient and inertia ratio, finite and > 0;
-        broadcast against each other.
-
-    Returns
-    -------
-    RollingSpectrum
-
-    Notes
-    -----
-    The closed forms of the module docstring (roots of
-    (k+1) lambda^2 + (delta - i k) lambda - i delta), each a quotient of
-    positive numbers, accurate to a few units in the last place.
-    """
-    delta = _validate.positive("delta", delta)
-    k = _validate.positive("k", k)
-    delta, k = np.broadcast_arrays(delta, k)
-    return _spectrum_rolling(delta, k)
-
-
-def eigenvalues(delta: ArrayLike, k: ArrayLike) -> NDArray[np.complex128]:
-    """Return the four eigenvalues of the real linear system `system_matrix`.
-
-    Returns
-    -------
-    numpy.ndarray
-        Complex, shape ``broadcast(delta, k).shape + (4,)``:
-        (lambda_g, conj lambda_g, lambda_c, conj lambda_c).
-
-    Notes
-    -----
-    See `spectrum` and the module docstring.
-    """
-    s = spectrum(delta, k)
-    out = np.empty((*s.sigma_g.shape, 4), dtype=complex)
-    out[..., 0] = s.sigma_g + 1j * s.nu_g
-    out[..., 1] = s.sigma_g - 1j * s.nu_g
-    out[..., 2] = s.sigma_c + 1j * s.nu_c
-    out[..., 3] = s.sigma_c - 1j * s.nu_c
-    return out
-
-
-def growth_rate(delta: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
-    """Return sigma_g, the growth rate per unit time of the spiral's radius.
-
-    Notes
-    -----
-    sigma_g = 4 delta q / (A (k + 2 + q)) (module docstring);
-    delta / (k (k + 1)) for small delta, about 1 / delta for large delta.
-    """
-    return spectrum(delta, k).sigma_g
-
-
-def log_growth_per_turn(delta: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
-    """Return 2 pi sigma_g / nu_g, the logarithm of the spiral's growth per turn.
-
-    Notes
-    -----
-    About 2 pi delta / k^2 for small delta and 2 pi / delta for large delta.
-    """
-    s = spectrum(delta, k)
-    return 2.0 * np.pi * s.sigma_g / s.nu_g
-
-
-def centre_decay_rate(delta: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
-    """Return |sigma_c|, the rate at which the spiral's centre approaches the axis.
-
-    Notes
-    -----
-    |sigma_c| = (delta + p) / (2 (k + 1)), between delta / (2 (k + 1)) and
-    delta / k; it is the decay rate of the non-growing part of the motion.
-    """
-    return -spectrum(delta, k).sigma_c
-
-
 def state_on_constraint(xyv: ArrayLike) -> NDArray[np.float64]:
     """Return the state (x, y, vx, vy, wx, wy) with w from the no-slip constraint.
 
@@ -164,6 +93,12 @@ def state_on_constraint(xyv: ArrayLike) -> NDArray[np.float64]:
     Notes
     -----
     (R1): w = r + i v, i.e. wx = x - vy, wy = y + vx.
+
+    Examples
+    --------
+    >>> from turntable import rolling
+    >>> rolling.state_on_constraint([1, 0, 0, 1])
+    array([1., 0., 0., 1., 1., 0.])
     """
     arr = _validate._as_float_array("xyv", xyv, "finite numbers (x, y, vx, vy)")
     if arr.ndim == 0 or arr.shape[-1] != 4 or not np.all(np.isfinite(arr)):
@@ -263,6 +198,16 @@ def modal_terms(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> RollingM
     -----
     A_g = (v0 - lambda_c r0) / (lambda_g - lambda_c),
     A_c = (lambda_g r0 - v0) / (lambda_g - lambda_c) (module docstring).
+
+    Examples
+    --------
+    The spiral and its centre add up to the motion:
+
+    >>> from turntable import rolling
+    >>> z0, t = rolling.state_on_constraint([0, 0, 1, 0]), [0.0, 1.0, 10.0]
+    >>> parts = rolling.modal_terms(z0, t, 0.1, 0.4)
+    >>> bool(abs(parts.spiral + parts.centre - rolling.solve(z0, t, 0.1, 0.4)).max() < 1e-14)
+    True
     """
     t = _validate.times("t", t)
     m = _modes(z0, delta, k)
@@ -306,6 +251,17 @@ def solve(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> NDArray[np.flo
     Notes
     -----
     r(t) = A_g e^{lambda_g t} + A_c e^{lambda_c t}, v = dr/dt, w = r + i v.
+
+    Examples
+    --------
+    The ball stays on the constraint (no slip):
+
+    >>> import numpy as np
+    >>> from turntable import rolling
+    >>> z0 = rolling.state_on_constraint([0, 0, 1, 0])
+    >>> z = rolling.solve(z0, np.linspace(0.0, 10.0, 3), 0.1, 0.4)
+    >>> bool(abs(rolling.slip_velocity(z)).max() < 1e-14)
+    True
     """
     spiral, centre = modal_terms(z0, t, delta, k)
     return spiral + centre
@@ -318,6 +274,16 @@ def spiral_centre(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> NDArra
     -----
     r_c(t) = A_c e^{lambda_c t}: it moves, spiralling into the turntable's
     axis at the rate |sigma_c| (`centre_decay_rate`).
+
+    Examples
+    --------
+    The centre moves from its start towards the axis:
+
+    >>> from turntable import rolling
+    >>> z0 = rolling.state_on_constraint([0, 0, 1, 0])
+    >>> rolling.spiral_centre(z0, [0.0, 10.0], 0.1, 0.4).round(3)
+    array([[-1.169,  1.591],
+           [-0.007,  0.308]])
     """
     return modal_terms(z0, t, delta, k).centre[:, :2]
 
@@ -342,6 +308,15 @@ def matched_delta(mu0: ArrayLike, k: ArrayLike, comparison: str) -> NDArray[np.f
     -------
     numpy.ndarray
         delta, of the broadcast shape of mu0 and k.
+
+    Examples
+    --------
+    >>> from turntable import rolling
+    >>> for comparison in rolling.COMPARISONS:
+    ...     print(comparison, rolling.matched_delta([0.1, 1.0], 0.4, comparison).round(4))
+    equal_coefficient [0.1 1. ]
+    equal_power [0.0296 0.0124]
+    equal_decay [0.3348 4.6981]
     """
     if comparison not in COMPARISONS:
         raise ValueError(f"comparison must be one of {COMPARISONS}; got {comparison!r}")
@@ -362,6 +337,17 @@ def growth_per_turn_ratio(mu0: ArrayLike, k: ArrayLike, comparison: str) -> NDAr
     (2 pi alpha1 / beta)(mu0) / (2 pi sigma_g / nu_g)(delta), delta =
     `matched_delta` (mu0, k, comparison).  Limits for large mu0:
     k^2 / (k + 1)^2 (a), 1 (b), k (c).
+
+    Examples
+    --------
+    Above 1 where the slipping spiral untwists faster per turn:
+
+    >>> from turntable import rolling
+    >>> for comparison in rolling.COMPARISONS:
+    ...     print(comparison, rolling.growth_per_turn_ratio([0.1, 1.0], 0.4, comparison).round(3))
+    equal_coefficient [1.342 0.211]
+    equal_power [2.721 1.06 ]
+    equal_decay [1.056 0.443]
     """
     from turntable.spectrum import log_growth_per_turn as slipping_growth
 
@@ -428,6 +414,17 @@ def newton_euler(
     solves the 3x3 linear system obtained by differentiating (R1),
     dv/dt + gamma x dw/dt - gamma x v = 0, with dv/dt = F - g gamma and
     k dw/dt = -gamma x F + M.  Nothing of the reduction (R4) is used.
+
+    Examples
+    --------
+    The constrained 3-D equations agree with the closed form:
+
+    >>> import numpy as np
+    >>> from turntable import rolling
+    >>> z0, t = rolling.state_on_constraint([0, 0, 1, 0]), np.linspace(0.0, 2.0, 5)
+    >>> result = rolling.newton_euler(z0, t, 0.1, 0.4)
+    >>> bool(abs(result.z - rolling.solve(z0, t, 0.1, 0.4)).max() < 1e-9)
+    True
     """
     if torque not in TORQUES:
         raise ValueError(f"torque must be one of {TORQUES}; got {torque!r}")

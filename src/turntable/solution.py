@@ -69,6 +69,14 @@ def conserved(z: ArrayLike, k: float) -> NDArray[np.float64]:
     -----
     Angular momentum about the contact point, Section 2: in complex form
     c = v - i k w is constant along every solution of (1.7).
+
+    Examples
+    --------
+    >>> from turntable import conserved, solve
+    >>> z = solve([0, 0, 1, 0, 0, 0], [0.0, 5.0], mu0=1.0, k=0.4)
+    >>> conserved(z, 0.4).round(12)
+    array([[0., 1.],
+           [0., 1.]])
     """
     k = _validate.positive_scalar("k", k)
     z = _validate.states("z", z)
@@ -99,6 +107,12 @@ def spiral_centre(z0: ArrayLike, k: float) -> NDArray[np.float64]:
     It does not depend on r(0).  The sign in y0 is +: the centre is the
     fixed point x0 e1 + y0 e2 with the same conserved c as z0, and at a
     fixed point v = 0, w = (x0, y0), so c = -i k (x0 + i y0).
+
+    Examples
+    --------
+    >>> from turntable import spiral_centre
+    >>> spiral_centre([0, 0, 1, 0, 0, 0], 0.4)
+    array([0. , 2.5])
     """
     z0 = _validate.states("z0", z0)
     k = _validate.positive_scalar("k", k)
@@ -157,6 +171,18 @@ def solve(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> NDArray[np.float
     cancellation-free form given in the module docstring.  The error is
     about 1e-15 relative to the size of the state for mu0 in
     [1e-3, 1e3] (see ``benchmarks/``).
+
+    Examples
+    --------
+    Started at the origin with velocity (1, 0) and no spin, the ball's centre spirals out
+    about (0, 2.5), its distance growing like e^(alpha1 t), alpha1 = 0.0226:
+
+    >>> import numpy as np
+    >>> from turntable import solve, spiral_centre
+    >>> z0 = [0, 0, 1, 0, 0, 0]
+    >>> z = solve(z0, np.linspace(0.0, 20.0, 3), mu0=1.0, k=0.4)
+    >>> np.hypot(*(z[:, :2] - spiral_centre(z0, 0.4)).T).round(3)
+    array([2.5  , 3.132, 3.926])
     """
     t = _validate.times("t", t)
     c = _coefficients(z0, mu0, k)
@@ -250,6 +276,16 @@ def max_time(mu0: ArrayLike, k: ArrayLike, z0: ArrayLike | None = None) -> NDArr
     Equation (2.7): the growing part of the solution is proportional to
     e^{alpha1 t}, alpha1 of (2.5)-(2.6), and a double holds at most
     DBL_MAX = 1.8e308 = e^{709.78}.
+
+    Examples
+    --------
+    >>> from turntable import max_time, solve
+    >>> z0 = [0, 0, 1, 0, 0, 0]
+    >>> t_max = max_time(1.0, 0.4, z0)
+    >>> print(f"{t_max:.0f}")
+    31320
+    >>> bool(abs(solve(z0, [t_max], 1.0, 0.4)).max() < float("inf"))
+    True
     """
     if z0 is None:
         s = spectrum(mu0, k)
@@ -326,6 +362,16 @@ def modal_terms(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> ModalTerms
         B = (lambda_+ rho0 - v0) / (lambda_+ - lambda_-),
 
     and each mode carries v = lambda rho, w = -i lambda rho / k.
+
+    Examples
+    --------
+    The three parts add up to the solution:
+
+    >>> from turntable import modal_terms, solve
+    >>> z0, t = [0, 0, 1, 0, 0, 0], [0.0, 1.0, 10.0]
+    >>> parts = modal_terms(z0, t, 1.0, 0.4)
+    >>> bool(abs(parts.centre + parts.plus + parts.minus - solve(z0, t, 1.0, 0.4)).max() < 1e-14)
+    True
     """
     t = _validate.times("t", t)
     c = _coefficients(z0, mu0, k)
@@ -363,6 +409,17 @@ def no_slip_state(z0: ArrayLike, k: float) -> NDArray[np.float64]:
     -----
     Section 3: in complex form u = v + i (w - r) = 0 and c = v - i k w fix
     v = i k (r - r_c) / (k + 1) and w = r + i v.
+
+    Examples
+    --------
+    The state jumps to the constraint u = 0 keeping position and angular momentum:
+
+    >>> from turntable import conserved, no_slip_state, slip_velocity
+    >>> z = no_slip_state([0, 0, 1, 0, 0, 0], 0.4)
+    >>> z.round(6)
+    array([0.      , 0.      , 0.714286, 0.      , 0.      , 0.714286])
+    >>> slip_velocity(z), conserved(z, 0.4)
+    (array([0., 0.]), array([0., 1.]))
     """
     z0 = _validate.states("z0", z0)
     k = _validate.positive_scalar("k", k)
@@ -384,6 +441,14 @@ def slip_velocity(z: ArrayLike) -> NDArray[np.float64]:
     -----
     Section 1 (dimensionless): u is the velocity of the ball's contact
     point relative to the plane; the no-slip constraint is u = 0.
+
+    Examples
+    --------
+    Moving at speed 1 without spin, the ball slips at 1:
+
+    >>> from turntable import slip_velocity
+    >>> slip_velocity([0, 0, 1, 0, 0, 0])
+    array([1., 0.])
     """
     z = _validate.states("z", z)
     return np.stack([z[..., 2] - z[..., 5] + z[..., 1], z[..., 3] + z[..., 4] - z[..., 0]], axis=-1)
@@ -415,6 +480,15 @@ def nonholonomic(z0: ArrayLike, t: ArrayLike, k: float) -> NDArray[np.float64]:
 
         r(t) = r_c + (r(0) - r_c) e^{i k t / (k + 1)},
         v = i k (r - r_c) / (k + 1),   w = r_c + (r - r_c) / (k + 1).
+
+    Examples
+    --------
+    After one `nonholonomic_period` the ball is back where it started:
+
+    >>> from turntable import nonholonomic, nonholonomic_period
+    >>> z = nonholonomic([0, 0, 1, 0, 0, 0], [0.0, nonholonomic_period(0.4)], 0.4)
+    >>> bool(abs(z[1] - z[0]).max() < 1e-14)
+    True
     """
     t = _validate.times("t", t)
     z0 = no_slip_state(_validate.state("z0", z0), k)

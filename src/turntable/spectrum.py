@@ -55,6 +55,16 @@ def system_matrix(mu0: float, k: float) -> NDArray[np.float64]:
              [ mu0/k I,   mu0/k J,  -mu0/k I  ]]
 
     with I the 2x2 identity and J = [[0, -1], [1, 0]].
+
+    Examples
+    --------
+    Its nonzero eigenvalues are `eigenvalues`; its kernel, the equilibria, is two-dimensional:
+
+    >>> import numpy as np
+    >>> from turntable import system_matrix
+    >>> L = system_matrix(1.0, 0.4)
+    >>> L.shape, int(np.linalg.matrix_rank(L))
+    ((6, 6), 4)
     """
     mu0 = _validate.positive_scalar("mu0", mu0)
     k = _validate.positive_scalar("k", k)
@@ -134,6 +144,13 @@ def spectrum(mu0: ArrayLike, k: ArrayLike) -> Spectrum:
         alpha1 = mu (a - 1),  alpha2 = -mu (a + 1),  beta = mu b
 
     evaluated in the cancellation-free form given in the module docstring.
+
+    Examples
+    --------
+    >>> from turntable import spectrum
+    >>> s = spectrum(1.0, 0.4)
+    >>> print(f"alpha1 = {s.alpha1:.6f}, alpha2 = {s.alpha2:.6f}, beta = {s.beta:.6f}")
+    alpha1 = 0.022587, alpha2 = -3.522587, beta = 0.282074
     """
     mu0 = _validate.positive("mu0", mu0)
     k = _validate.positive("k", k)
@@ -163,6 +180,17 @@ def eigenvalues(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.complex128]:
     lambda_{3,4} = mu (-1 - sqrt(1 +- i eps)); each real and imaginary part
     has a relative error of a few units in the last place for all
     mu0, k > 0 (see ``benchmarks/``).
+
+    Examples
+    --------
+    Two pairs alpha1 +- i beta and alpha2 +- i beta, with alpha1 + alpha2 = -mu0 (k + 1) / k:
+
+    >>> from turntable import eigenvalues
+    >>> lam = eigenvalues(1.0, 0.4)
+    >>> lam.round(4)
+    array([ 0.0226+0.2821j,  0.0226-0.2821j, -3.5226+0.2821j, -3.5226-0.2821j])
+    >>> print(f"{lam[0].real + lam[2].real:.12f}")
+    -3.500000000000
     """
     s = spectrum(mu0, k)
     out = np.empty((*s.alpha1.shape, 4), dtype=complex)
@@ -193,6 +221,17 @@ def log_damping_ratio(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
     = sqrt((a + 1) / (a - 1)) > 1, ln N > 2 pi for all mu0 and k, tending
     to 2 pi as mu0 -> 0.  N itself overflows a double near mu0 = 5, so only
     its logarithm is returned.
+
+    Examples
+    --------
+    Above the bound 2 pi for every mu0 (here k = 2/5):
+
+    >>> import numpy as np
+    >>> from turntable import log_damping_ratio
+    >>> log_damping_ratio([1e-3, 1.0], 0.4).round(2)
+    array([ 6.79, 78.47])
+    >>> bool(np.all(log_damping_ratio(np.geomspace(1e-6, 1e6, 49), 0.4) > 2 * np.pi))
+    True
     """
     s = spectrum(mu0, k)
     return 2.0 * np.pi * (s.a + 1.0) / s.b
@@ -205,6 +244,14 @@ def log_growth_per_turn(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
     -----
     alpha1 / beta = (a - 1) / b = sqrt((a - 1) / (a + 1)) = beta / |alpha2|,
     which decreases monotonically from 1 (mu0 -> 0) to 0 (mu0 -> infinity).
+
+    Examples
+    --------
+    The spiral grows by less per turn as friction grows:
+
+    >>> from turntable import log_growth_per_turn
+    >>> log_growth_per_turn([0.1, 1.0, 10.0], 0.4).round(4)
+    array([2.7..., 0.5031, 0.05...])
     """
     s = spectrum(mu0, k)
     return 2.0 * np.pi * s.b / (s.a + 1.0)
@@ -238,6 +285,16 @@ def alpha1_peak(k: ArrayLike) -> Peak:
     In terms of a of (2.5), alpha1 = (k / (k + 1)) sqrt((a - 1)/(a + 1)) / a,
     whose logarithmic derivative vanishes where a^2 - a - 1 = 0, i.e.
     a = phi.  For k = 2/5 the peak is at mu0 = 0.0793.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from turntable import alpha1_peak, spectrum
+    >>> peak = alpha1_peak(0.4)
+    >>> print(f"mu0 = {peak.mu0:.4f}, alpha1 = {peak.alpha1:.4f}")
+    mu0 = 0.0793, alpha1 = 0.0858
+    >>> bool(spectrum(np.array([0.9, 1.1]) * peak.mu0, 0.4).alpha1.max() < peak.alpha1)
+    True
     """
     k = _validate.positive("k", k)
     kk = k / (k + 1.0)
@@ -277,6 +334,18 @@ def large_friction_expansion(mu0: ArrayLike, k: ArrayLike) -> Expansion:
 
     The remainders are O(mu0^-2) for beta (-2 k^5 / (mu0^2 (k+1)^5)) and
     O(mu0^-3) for alpha1 and alpha2.
+
+    Examples
+    --------
+    Against the exact roots at mu0 = 100: alpha1 ~ k^2 / (mu0 (k + 1)^3),
+    beta ~ k / (k + 1):
+
+    >>> from turntable import large_friction_expansion, spectrum
+    >>> approx, exact = large_friction_expansion(100.0, 0.4), spectrum(100.0, 0.4)
+    >>> print(f"{approx.alpha1:.6e} {exact.alpha1:.6e}")
+    2.332362e-04 2.332...e-04
+    >>> print(f"{approx.beta:.6f} {exact.beta:.6f}")
+    0.285714 0.2857...
     """
     mu0 = _validate.positive("mu0", mu0)
     k = _validate.positive("k", k)

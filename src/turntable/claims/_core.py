@@ -84,6 +84,16 @@ def resolve_params(params: Mapping[str, Any] | None = None) -> dict[str, Any]:
     ValueError
         For an unknown key or a value of the wrong type or range; the message
         names the key and what the schema expects.
+
+    Examples
+    --------
+    >>> from turntable import claims
+    >>> claims.resolve_params({"k_paper": 0.5})["k_paper"]
+    0.5
+    >>> claims.resolve_params({"n_points": 400.0})
+    Traceback (most recent call last):
+    ...
+    ValueError: params['n_points']: 400.0 is not of type 'integer' (expected: ...)
     """
     p = {**_defaults(), **dict(params or {})}
     schema = params_schema()
@@ -294,6 +304,26 @@ def register(
     a check whose tolerance does not bound it); ``gist`` what it establishes then, in a few
     words (see `Claim`). Everything the report, the tests and
     the article say of a claim comes from here: adding a claim is one call.
+
+    Examples
+    --------
+    The form of a registration (a claim of the registry, so refused as a second one):
+
+    >>> from turntable.claims import Where, register
+    >>> decorator = register(
+    ...     "spectrum.kernel",
+    ...     where=Where("Sec. 2", "(2.3)"),
+    ...     claim="L has a two-dimensional kernel.",
+    ...     paper_value={"text": "a plane of equilibria"},
+    ...     method="Ranks of L at many (mu0, k).",
+    ...     expected="confirmed",
+    ...     decisive="ranks",
+    ...     gist="a plane of equilibria",
+    ... )
+    >>> decorator(lambda p: None)
+    Traceback (most recent call last):
+    ...
+    ValueError: claim id 'spectrum.kernel' registered twice
     """
     if expected not in VERDICTS:
         raise ValueError(f"expected verdict of {id!r} must be one of {VERDICTS}; got {expected!r}")

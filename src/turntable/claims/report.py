@@ -19,7 +19,7 @@ from turntable import reference
 from turntable.claims import VERDICTS, evaluate_all, resolve_params
 from turntable.claims._core import clean, split_bound
 
-#: What each verdict means, in the words of the report (README and article say the same).
+#: What each verdict means, in the words of the report (docs/verdicts.md and the article agree).
 VERDICT_MEANINGS: dict[str, str] = {
     "confirmed": "the claim holds as stated",
     "refined": "it holds in a narrower or more precise form, stated in the evidence",

@@ -97,6 +97,16 @@ def predicted_stderr(
     se(c) = c sqrt(var(ln c)).  It is what `fit_model` reports, on average, for films of
     this camera, as long as the fit is locally linear: for a predicted relative error
     above about 0.2 the estimates scatter more than this (Fig. 8).
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> print(f"{fit.predicted_stderr('slipping', 3.0, z0, setup, camera):.2f}")
+    0.33
     """
     noise = _validate.positive_scalar("noise", camera.noise)
     lay, jac = _truth_jacobian(model, coefficient, state0, setup, camera, fit_omega, fit_axis)
@@ -168,6 +178,17 @@ def distinguishability(
     (e^{D / N} - 1)(N - p_s) / q: probability about P(chi'^2_q(lambda) > 2 q) for many
     frames (e^-2 = 0.14 at lambda = 0, when the two motions coincide).  Valid while the
     fits are locally linear.
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> d = fit.distinguishability(3.0, z0, setup, camera)
+    >>> print(f"delta {d.delta:.5f}, selection probability {d.selection_probability:.4f}")
+    delta 0.00545, selection probability 1.0000
     """
     from scipy.special import ncfdtr
 
@@ -252,6 +273,17 @@ def measurability(
         For each mu0: `predicted_stderr` of mu0; for delta equal to it, the rolling
         ball's `predicted_stderr` of delta; and the `distinguishability` of the slipping
         ball from the closest rolling motion.
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> table = fit.measurability([0.3, 3.0, 30.0], z0, setup, camera)
+    >>> (table.mu0_stderr / table.mu0).round(3)
+    array([0.017, 0.111, 1.259])
     """
     mu0 = _validate.positive("mu0", mu0).ravel()
     setup = check_setup(setup)
@@ -290,6 +322,17 @@ def indistinguishable_above(table: Measurability, probability: float) -> float:
         The crossing of the selection probability with ``probability`` after the last
         grid point where it is at least ``probability``, interpolated linearly in ln mu0;
         inf if the last grid point is still above, the first grid value if none is.
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> table = fit.measurability([0.3, 3.0, 30.0, 300.0], z0, setup, camera)
+    >>> print(f"{fit.indistinguishable_above(table, 0.95):.2f}")
+    3.45
     """
     prob = float(probability)
     mu0, sel = np.asarray(table.mu0), np.asarray(table.selection_probability)
@@ -327,6 +370,13 @@ def reliable_range(
         The longest run of grid points below ``level``, its ends interpolated linearly in
         (ln mu0, ln relative error) to the crossings (a grid end if no crossing); None if
         no grid point is below ``level``.
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> low, high = fit.reliable_range([0.1, 1.0, 10.0, 100.0], [0.5, 0.1, 0.1, 0.5], 0.2)
+    >>> print(f"{low:.3f} {high:.2f}")
+    0.371 26.96
     """
     x = np.log(_validate.positive("mu0", mu0).ravel())
     y = np.log(_validate.positive("relative_stderr", relative_stderr).ravel())
@@ -360,6 +410,18 @@ def measurability_json(
     `reliable_range` of mu0 where the predicted relative error is below it.
 
     ``rig`` is a `turntable.film.Rig` (set-up, camera, start state, mass).
+
+    Examples
+    --------
+    >>> from turntable import film, fit
+    >>> rig = film.rig_from_config({
+    ...     "radius_m": 0.005, "mass_kg": 0.00411, "k": 0.4, "rpm": 33.3, "axis_m": [0, 0],
+    ...     "fps": 30.0, "noise_m": 2e-4, "duration_s": 2.0, "start_position_m": [0.05, 0],
+    ...     "start_velocity_m_s": [0, 0], "start_spin_rad_s": [0, 0]})
+    >>> table = fit.measurability([0.3, 3.0, 30.0], rig.state0, rig.setup, rig.camera)
+    >>> out = fit.measurability_json(table, 0.95, rig, reliable_level=0.2)
+    >>> out["reliable_mu0_range"], out["indistinguishable_above_mu0"]
+    ([0.3, 5.2...], 3.4...)
     """
     limit = indistinguishable_above(table, probability)
     out = {

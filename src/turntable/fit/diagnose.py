@@ -31,7 +31,19 @@ MAX_FRAME_STEP = 1.0
 
 
 def frame_step(film: Film, setup: Setup) -> float:
-    """Return the median step Omega (t_{i+1} - t_i) between frames, rad (0 for one frame)."""
+    """Return the median step Omega (t_{i+1} - t_i) between frames, rad (0 for one frame).
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> film = fit.simulate_film("slipping", 3.0, z0, setup, camera, seed=1)
+    >>> print(f"{fit.frame_step(film, setup):.4f} rad")
+    0.1167 rad
+    """
     t = np.asarray(film.t, dtype=float)
     return float(setup.omega * np.median(np.diff(t))) if t.size > 1 else 0.0
 
@@ -104,6 +116,18 @@ def consistency(
     |z| > `CONSISTENCY_Z` happens with probability 6e-5.  Where the wrong Omega has made
     the other model win, the refit selects the right one again (``selection_changed`` if
     it does so decisively).
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> film = fit.simulate_film("slipping", 3.0, z0, setup, camera, seed=1)
+    >>> check = fit.consistency(film, setup, fit.fit_film(film, setup))
+    >>> check.freed, bool(abs(check.omega_z) < 4)
+    (('omega', 'axis'), True)
     """
     freed = tuple(n for n, fixed in (("omega", not fit_omega), ("axis", not fit_axis)) if fixed)
     if not freed:
@@ -148,6 +172,21 @@ def checked_selection(result: FilmFit, check: Consistency | None) -> FilmFit:
         ``decisive`` False and ``reason`` saying why.  (A wrong Omega can make the wrong
         model win by a large AICc difference: the difference then measures the fit to the
         wrong rate, not the evidence for the model.)
+
+    Examples
+    --------
+    A rate 1 % off, given to the fit of a 10 s film:
+
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> film = fit.simulate_film("slipping", 3.0, z0, setup, Camera(30.0, 2e-4, 10.0), seed=2)
+    >>> wrong = setup._replace(omega=3.5 * 1.01)
+    >>> result = fit.fit_film(film, wrong)
+    >>> checked = fit.checked_selection(result, fit.consistency(film, wrong, result))
+    >>> result.decisive, checked.decisive
+    (True, False)
     """
     if check is None or not result.decisive:
         return result
@@ -200,6 +239,20 @@ def problems(
         than `CONSISTENCY_Z` standard errors from the one the film prefers (judged on the
         model selected, if decisively), and a selection that changes decisively when they
         are free.
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> film = fit.simulate_film("slipping", 3.0, z0, setup, camera, seed=1)
+    >>> fit.problems(fit.fit_film(film, setup), film, setup)
+    []
+    >>> few = film._replace(t=film.t[:10], x=film.x[:10], y=film.y[:10])
+    >>> [line.split(":")[0] for line in fit.problems(fit.fit_film(few, setup), few, setup)]
+    ['slipping', 'no model selected', 'rolling_resistance']
     """
     out: list[str] = []
     step = frame_step(film, setup)

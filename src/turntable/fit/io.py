@@ -56,6 +56,18 @@ def result_json(
         Keys "selected", "selection", "slipping", "rolling_resistance", "consistency",
         "warnings" (`problems`), "data", "setup", "units" (README, "Fitting your own
         film").  Non-finite numbers are None.
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> film = fit.simulate_film("slipping", 3.0, z0, setup, camera, seed=1)
+    >>> out = fit.result_json(fit.fit_film(film, setup), setup, film, mass=0.00411)
+    >>> out["selected"], round(out["slipping"]["mu0"], 2), out["data"]["synthetic"]
+    ('slipping', 2.93, True)
     """
     setup = check_setup(setup)
     fits = result.fits
@@ -224,6 +236,18 @@ def setup_from_json(result: dict[str, Any], model: str | None = None) -> Setup:
 
     With ``model``, Omega and the axis are that model's (fitted ones with ``--fit-omega``,
     ``--fit-axis``).
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> film = fit.simulate_film("slipping", 3.0, z0, setup, camera, seed=1)
+    >>> out = fit.result_json(fit.fit_film(film, setup), setup, film)
+    >>> fit.setup_from_json(out) == setup
+    True
     """
     s = result["setup"]
     omega, axis = s["omega_rad_s"], s["axis_m"]
@@ -235,7 +259,20 @@ def setup_from_json(result: dict[str, Any], model: str | None = None) -> Setup:
 
 def fitted_coefficient(result: dict[str, Any], model: str) -> float:
     """Return the coefficient with which a model's path is drawn: the fitted value, or
-    where the search stopped when it is reported as a limit (``*_search_bound``)."""
+    where the search stopped when it is reported as a limit (``*_search_bound``).
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> film = fit.simulate_film("slipping", 3.0, z0, setup, camera, seed=1)
+    >>> out = fit.result_json(fit.fit_film(film, setup), setup, film)
+    >>> print(f"{fit.fitted_coefficient(out, 'slipping'):.2f}")
+    2.93
+    """
     entry = result[_check_model(model)]
     name = COEFFICIENT[model]
     value = entry.get(name)
@@ -263,6 +300,21 @@ def fitted_positions(result: dict[str, Any], model: str, t: ArrayLike) -> NDArra
     ------
     ValueError
         If the result holds no finite fit of that model.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> film = fit.simulate_film("slipping", 3.0, z0, setup, camera, seed=1)
+    >>> out = fit.result_json(fit.fit_film(film, setup), setup, film)
+    >>> xy = fit.fitted_positions(out, "slipping", film.t)
+    >>> residual = xy - np.column_stack([film.x, film.y])
+    >>> print(f"rms residual {(residual**2).mean() ** 0.5 * 1e3:.2f} mm")
+    rms residual 0.17 mm
     """
     entry = result[_check_model(model)]
     state0 = entry["state0"]

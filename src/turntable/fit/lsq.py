@@ -254,6 +254,18 @@ def fit_model(
     would overflow a double over the film (`turntable.max_time`, relevant only for very long
     films) gets a huge residual, so the optimiser steps back.  A coefficient at a bound of
     `BOUNDS` gets a one-sided 95 % limit (`_limit`).
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> film = fit.simulate_film("slipping", 3.0, z0, setup, camera, seed=1)
+    >>> result = fit.fit_model(film, setup, "slipping")
+    >>> print(f"mu0 = {result.coefficient:.2f} +- {result.stderr:.2f}")
+    mu0 = 2.93 +- 0.28
     """
     lay = _layout(model, fit_omega, fit_axis)
     setup = check_setup(setup)
@@ -345,6 +357,21 @@ def fit_film(
     because the comparison then rests on a handful of residual degrees of freedom (with
     AIC, 5-frame films selected the wrong model in half the cases, some of them with a
     difference above 10).
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> film = fit.simulate_film("slipping", 3.0, z0, setup, camera, seed=1)
+    >>> result = fit.fit_film(film, setup)
+    >>> result.selected, result.decisive
+    ('slipping', True)
+    >>> mu0 = result.fits["slipping"].coefficient
+    >>> print(f"mu0 = {mu0:.2f}, AICc difference {result.aicc_difference:.0f}")
+    mu0 = 2.93, AICc difference 50
     """
     fits = {
         model: fit_model(film, setup, model, fit_omega=fit_omega, fit_axis=fit_axis)

@@ -46,6 +46,14 @@ def n_parameters(model: str, fit_omega: bool = False, fit_axis: bool = False) ->
     The initial state (6 for slipping, 4 for rolling), ln c, and with ``fit_omega`` ln Omega,
     with ``fit_axis`` the axis (x, y) of the rolling model (the slipping model does not
     depend on the axis).
+
+    Examples
+    --------
+    The coefficient and the initial state (6 numbers slipping, 4 rolling), and Omega if free:
+
+    >>> from turntable import fit
+    >>> fit.n_parameters("slipping"), fit.n_parameters("rolling_resistance", fit_omega=True)
+    (7, 6)
     """
     return N_STATE[_check_model(model)] + 1 + int(bool(fit_omega)) + 2 * _axis_free(model, fit_axis)
 
@@ -55,6 +63,12 @@ def min_frames(fit_omega: bool = False, fit_axis: bool = False) -> int:
 
     Each frame gives N = 2 n coordinates; AICc needs N - K - 1 >= `MIN_DOF` with
     K = p + 1 for the model with the most parameters p (`n_parameters`).
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> fit.min_frames(), fit.min_frames(fit_omega=True)
+    (15, ...)
     """
     p = max(n_parameters(m, fit_omega, fit_axis) for m in MODELS)
     return math.ceil((MIN_DOF + p + 2) / 2)
@@ -107,6 +121,17 @@ def positions(
     numpy.ndarray
         Shape (len(t), 2): axis + R r(Omega (t - t0)) with r from `turntable.solve` or
         `turntable.rolling.solve`.
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> fit.positions("slipping", 3.0, z0, [0.0, 1.0], setup).round(4)
+    array([[0.05  , 0.    ],
+           [0.0289, 0.0423]])
     """
     _check_model(model)
     setup = check_setup(setup)

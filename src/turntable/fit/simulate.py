@@ -45,6 +45,17 @@ def simulate_film(
     Film
         Frames at t = i / fps; x, y = R (x, y)(Omega t) + axis + noise, each coordinate
         with independent N(0, noise^2) errors; marked ``synthetic``.
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> film = fit.simulate_film("slipping", 3.0, z0, setup, camera, seed=1)
+    >>> len(film.t), film.synthetic
+    (61, True)
     """
 
     t = frame_times(camera)
@@ -65,7 +76,19 @@ def synthetic_header(
     camera: Camera,
     seed: int,
 ) -> list[str]:
-    """Return the comment lines that mark a film SYNTHETIC and give its true parameters."""
+    """Return the comment lines that mark a film SYNTHETIC and give its true parameters.
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> fit.synthetic_header("slipping", 3.0, z0, setup, camera, seed=1)[:2]
+    ['SYNTHETIC DATA: simulated by turntable.fit.simulate_film, not measured.',
+     'truth: model = slipping, mu0 = 3.0 (dimensionless)']
+    """
 
     z0 = _validate.state("state0", state0)
     si = state_to_si(z0, setup)

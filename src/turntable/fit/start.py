@@ -145,6 +145,18 @@ def start_values(
     grid of `GRID_PER_DECADE` points per decade over `BOUNDS`, then a bounded search
     (Brent) in ln c between the neighbours of the best grid point; on a subset of the
     frames (`START_FRAMES`, `START_STEP`), which is plenty for a start.
+
+    Examples
+    --------
+    From a noiseless rolling path:
+
+    >>> import numpy as np
+    >>> from turntable import fit, rolling
+    >>> tau = np.linspace(0.0, 20.0, 200)
+    >>> z = rolling.solve(rolling.state_on_constraint([10, 0, 0, 0]), tau, 0.02, 0.4)
+    >>> coefficient, state = fit.start_values("rolling_resistance", tau, z[:, :2], 0.4)
+    >>> print(f"{coefficient:.3f}")
+    0.020
     """
     constant = _axis_free(model, fit_axis)
     lo, hi = (math.log(b) for b in BOUNDS[model])

@@ -1,0 +1,136 @@
+"""Sphinx configuration of the documentation site (`make docs`); builds offline."""
+
+import contextlib
+import inspect
+import pkgutil
+from importlib import import_module
+
+from docutils import nodes
+from docutils.statemachine import StringList
+from sphinx.errors import PycodeError
+from sphinx.pycode import ModuleAnalyzer
+from sphinx.util.docutils import SphinxDirective
+
+import turntable
+
+project = "turntable"
+author = "turntable developers"
+copyright = "turntable developers, MIT licence"
+release = version = turntable.__version__
+
+extensions = [
+    "myst_parser",
+    "numpydoc",
+    "sphinx.ext.autodoc",
+    "sphinx.ext.autosummary",
+    "sphinx.ext.mathjax",
+]
+source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
+exclude_patterns = ["_build"]
+default_role = "py:obj"
+myst_heading_anchors = 3
+
+autodoc_typehints = "none"
+autosummary_generate = False
+numpydoc_show_class_members = False
+
+html_theme = "pydata_sphinx_theme"
+html_title = f"turntable {release}"
+html_show_sourcelink = False
+html_theme_options = {
+    "navigation_with_keys": False,
+    "show_toc_level": 2,
+    "secondary_sidebar_items": ["page-toc"],
+    "footer_start": ["copyright"],
+    "footer_end": [],
+}
+
+#: The modules of the API reference, one page each (docs/api/).
+API_MODULES = [
+    "turntable",
+    "turntable.rolling",
+    "turntable.film",
+    "turntable.fit",
+    "turntable.claims",
+    "turntable.config",
+]
+
+
+def public_names(module_name):
+    """The names of ``__all__``, else those defined in the module and not private."""
+    module = import_module(module_name)
+    return getattr(module, "__all__", None) or [
+        name
+        for name, obj in vars(module).items()
+        if getattr(obj, "__module__", None) == module_name and not name.startswith("_")
+    ]
+
+
+def public_functions(module_name):
+    module = import_module(module_name)
+    return [n for n in public_names(module_name) if inspect.isfunction(getattr(module, n))]
+
+
+# Every public function of the API has an Examples section (`make test` runs them).
+numpydoc_validation_checks = {"EX01"}
+_API_FUNCTIONS = [f"{m}.{n}" for m in API_MODULES for n in public_functions(m)]
+numpydoc_validation_exclude = {
+    "^(?!(?:" + "|".join(f.replace(".", r"\.") for f in _API_FUNCTIONS) + ")$)"
+}
+
+
+def _doc_commented():
+    """Names given a doc comment (#:) in some module of the package."""
+    names = set()
+    for info in pkgutil.walk_packages(turntable.__path__, "turntable."):
+        with contextlib.suppress(PycodeError):
+            names |= {attr for _, attr in ModuleAnalyzer.for_module(info.name).find_attr_docs()}
+    return names
+
+
+class ApiMembers(SphinxDirective):
+    """``.. api-members:: module``: a table of its public functions, each function, then
+    its public classes and its constants that have a doc comment."""
+
+    required_arguments = 1
+    commented = _doc_commented()
+
+    def run(self):
+        name = self.arguments[0]
+        module = import_module(name)
+        functions = public_functions(name)
+        others = [
+            n
+            for n in public_names(name)
+            if n not in functions and (inspect.isclass(getattr(module, n)) or n in self.commented)
+        ]
+        lines = [".. autosummary::", "   :nosignatures:", "", *(f"   {n}" for n in functions), ""]
+        lines += [line for n in functions for line in (f".. autofunction:: {name}.{n}", "")]
+        if others:
+            lines += [".. rubric:: Classes and constants", ""]
+        for n in others:
+            if inspect.isclass(getattr(module, n)):
+                lines += [f".. autoclass:: {name}.{n}", "   :members:", ""]
+            else:
+                lines += [f".. autodata:: {name}.{n}", ""]
+        container = nodes.container()
+        self.state.nested_parse(StringList(lines), self.content_offset, container)
+        return container.children
+
+
+def _skip_field_aliases(app, what, name, obj, skip, options):
+    """The fields of a NamedTuple are in its Attributes section, not again as members."""
+    if (getattr(obj, "__doc__", None) or "").startswith("Alias for field number"):
+        return True
+    return None
+
+
+def _plain_bars(app, what, name, obj, options, lines):
+    """The docstrings write |x| for an absolute value, never a substitution."""
+    lines[:] = [line.replace("|", r"\|") for line in lines]
+
+
+def setup(app):
+    app.add_directive("api-members", ApiMembers)
+    app.connect("autodoc-process-docstring", _plain_bars, priority=400)
+    app.connect("autodoc-skip-member", _skip_field_aliases)

@@ -40,6 +40,7 @@ import numpy as np
 from turntable import film as film_io
 from turntable import fit
 from turntable._json import finite_or_none
+from turntable._plot_check import check_plot
 
 #: The claims report ``turntable claims`` reads unless told another (written by ``make``).
 DEFAULT_CLAIMS_REPORT = "results/claims.json"
@@ -124,6 +125,9 @@ def _parser() -> argparse.ArgumentParser:
         "--plot", metavar="FIG.png", help="draw data, both fits and the residuals (matplotlib)"
     )
     _add_claims_parser(sub)
+    from turntable.video.cli import add_parser
+
+    add_parser(sub)
     return parser
 
 
@@ -196,26 +200,6 @@ def _write_json(out: dict[str, Any]) -> None:
         raise SystemExit(1) from None
 
 
-def _check_plot(path: str) -> None:
-    try:
-        from matplotlib.backend_bases import FigureCanvasBase
-    except ImportError:
-        _fail(
-            "turntable fit: error: --plot needs matplotlib, which cannot be imported "
-            "(pip install matplotlib)"
-        )
-    formats = FigureCanvasBase.get_supported_filetypes()
-    suffix = Path(path).suffix.lstrip(".").lower()
-    if suffix not in formats:
-        _fail(
-            f"turntable fit: error: --plot {path}: unknown format {suffix!r} "
-            f"(use one of {', '.join(sorted(formats))})"
-        )
-    folder = Path(path).resolve().parent
-    if not folder.is_dir() or not os.access(folder, os.W_OK):
-        _fail(f"turntable fit: error: --plot: cannot write into the folder {folder}")
-
-
 def _bounds(setup: film_io.Setup) -> dict[str, tuple[float, float]]:
     """Values the fit can take: |x - axis| / R and |t| Omega up to `MAX_DIMENSIONLESS`."""
     span = MAX_DIMENSIONLESS * setup.radius
@@ -238,7 +222,7 @@ def fit_command(args: argparse.Namespace) -> int:
     if not all(math.isfinite(a) for a in args.axis):
         _fail(f"turntable fit: error: --axis must be two finite numbers (m); got {args.axis}")
     if args.plot is not None:
-        _check_plot(args.plot)
+        check_plot(args.plot, "turntable fit")
     omega = args.omega if args.omega is not None else film_io.rpm_to_omega(args.rpm)
     setup = film_io.Setup(args.radius, omega, args.k, (args.axis[0], args.axis[1]))
     options = {"fit_omega": args.fit_omega, "fit_axis": args.fit_axis}
@@ -291,6 +275,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         return fit_command(args)
     if args.command == "claims":
         return claims_command(args)
+    if args.command == "track":
+        from turntable.video.cli import track_command
+
+        return track_command(args)
     raise AssertionError(args.command)  # argparse allows only the commands above
 
 

@@ -68,7 +68,7 @@ class Scene(NamedTuple):
     duration: float = 2.0
     shutter: float = 0.5
     noise: float = 3.0
-    mark_radius: float = 0.035
+    mark_radius: float = 0.025
     mark_at: float = 0.88
     crf: int = 18
     hidden: tuple[int, ...] = ()

@@ -125,7 +125,7 @@ def _first(img, rim, platter_level, spread, allowed, ball_area) -> tuple[Blob, f
     found = [
         (s, b) for s in (1.0, -1.0) for b in blobs(img, full, platter_level, s, threshold, allowed)
     ]
-    candidates = [(s, b) for s, b in found if 0.25 * ball_area < b.area < 4.0 * ball_area]
+    candidates = [(s, b) for s, b in found if 0.5 * ball_area < b.area < 2.0 * ball_area]
     if not candidates:
         raise VideoError(
             f"no ball found on the first frame: no blob of about {ball_area:.0f} px (a ball of "
@@ -387,4 +387,22 @@ def calibration_json(track: Track, ball_radius: float, platter_radius: float) ->
             ),
             "stderr": "from the least-squares fit of the camera to the rim and the mark",
         },
+    }
+
+
+def video_summary(track: Track, given_omega: bool) -> dict[str, Any]:
+    """What ``turntable fit VIDEO`` reports of the tracking, under "video"."""
+    cal = track.calibration
+    return {
+        "file": track.info.path,
+        "synthetic": track.info.synthetic,
+        "frames": int(track.times.size),
+        "lost_frames": track.lost,
+        "omega_rad_s": abs(cal.omega),
+        "omega_stderr_rad_s": cal.omega_stderr,
+        "omega_used": "given" if given_omega else "measured in the video",
+        "axis": "measured in the video: the origin of the film",
+        "clockwise_from_above": track.mirrored,
+        "camera": dict(cal.derived),
+        "camera_stderr": dict(cal.stderr),
     }

@@ -198,9 +198,12 @@ def calibrate(
         roll0 = (roll0 + math.pi) % (2 * math.pi) - math.pi
         prob = _Problem(rim_pts, mark_t, mark_uv, size, platter_radius, rim, roll0, rim_frames)
         fit = _fit(prob, b0, roll0)
-        if best is None or fit.cost < best[0].cost:
-            best = (fit, prob)
-    fit, prob = best
+        # compared in pixels: each fit has weighed its points by its own scatter
+        rim_px = prob.rim(fit.x) * prob.sigma_rim
+        score = np.mean((prob.mark(fit.x) * prob.sigma_mark) ** 2) + np.mean(rim_px**2)
+        if best is None or score < best[2]:
+            best = (fit, prob, score)
+    fit, prob, _ = best
     theta = fit.x
     jac = fit.jac
     cov = np.linalg.pinv(jac.T @ jac)

@@ -83,14 +83,29 @@ class Rendered(NamedTuple):
 
 
 def default_pose(scene: Scene) -> Pose:
-    """A phone-like camera (60 degrees across) whose view of the platter fills 85 % of
-    the image's height."""
+    """A phone-like camera (60 degrees across) whose image of the platter is centred and
+    spans 85 % of the image's height (or 90 % of its width)."""
     width, height = scene.size
     focal = width / (2.0 * math.tan(math.radians(30.0)))
-    tilt = math.radians(scene.tilt_deg)
-    extent = 2.0 * scene.platter_radius * max(math.cos(tilt), 0.2)
-    distance = focal * extent / (0.85 * min(height, width * 0.9))
-    return Pose(focal, tilt, math.radians(scene.roll_deg), (0.0, 0.0), distance, scene.size)
+    p = scene.platter_radius
+    pose = Pose(
+        focal,
+        math.radians(scene.tilt_deg),
+        math.radians(scene.roll_deg),
+        (0.0, 0.0),
+        focal * 2 * p / (0.85 * height),
+        scene.size,
+    )
+    s = np.linspace(0, 2 * math.pi, 721)
+    rim = p * np.column_stack([np.cos(s), np.sin(s)])
+    for _ in range(6):
+        img = camera.project(pose, rim)
+        span = max(np.ptp(img[:, 1]) / (0.85 * height), np.ptp(img[:, 0]) / (0.9 * width))
+        middle = (img.min(axis=0) + img.max(axis=0)) / 2
+        shift = camera.back_project(pose, middle) - camera.back_project(pose, pose.principal)
+        look = (pose.look_at[0] + shift[0], pose.look_at[1] + shift[1])
+        pose = pose._replace(distance=pose.distance * span, look_at=look)
+    return pose
 
 
 def _texture(rng: np.random.Generator, n_r: int, n_phi: int, blur_cells: float) -> NDArray:
@@ -133,7 +148,7 @@ class _Renderer:
         self.i_r = np.minimum(
             (r.ravel()[self.inside] / p * self.n_r).astype(np.int32), self.n_r - 1
         )
-        self.phi_cells = (phi / (2 * math.pi) * self.n_phi).astype(np.float32)
+        self.phi_cells = (phi / (2 * math.pi) * self.n_phi).astype(np.int32) % self.n_phi
         exposure = scene.shutter / scene.fps
         self.exposure = exposure
         self.tex = _texture(
@@ -142,6 +157,8 @@ class _Renderer:
         table = TABLE + 4.0 * self.rng.standard_normal((height, width)) + 15.0 * (v / height - 0.5)
         self.base = (table * (1.0 - self.cover)).astype(np.float32)
         self.cover32 = self.cover.ravel()[self.inside].astype(np.float32)
+        self.noise = self.rng.standard_normal((2 * height, 2 * width), dtype=np.float32)
+        self.noise *= np.float32(scene.noise)
         self.foot = foot
 
     def _box(self, centre: NDArray, half: float) -> tuple[slice, slice]:
@@ -156,7 +173,7 @@ class _Renderer:
         sc, pose = self.scene, self.pose
         img = self.base.copy().ravel()
         shift = self.omega * t / (2 * math.pi) * self.n_phi
-        i_phi = np.mod(self.phi_cells - np.float32(shift), self.n_phi).astype(np.int32)
+        i_phi = (self.phi_cells - np.int32(round(shift) % self.n_phi)) % self.n_phi
         img[self.inside] += self.cover32 * self.tex[self.i_r, i_phi]
         img = img.reshape(self.base.shape)
         times = t + self.exposure * (np.arange(BLUR_SAMPLES) + 0.5) / BLUR_SAMPLES
@@ -176,7 +193,9 @@ class _Renderer:
         img[box] = img[box] * (1 - cov) + MARK * cov
         if ball is not None:
             self._ball(img, ball)
-        img += self.rng.standard_normal(img.shape, dtype=np.float32) * np.float32(sc.noise)
+        # sensor noise: a window at a random place of a larger field of noise
+        dv, du = self.rng.integers(0, self.base.shape[0]), self.rng.integers(0, self.base.shape[1])
+        img += self.noise[dv : dv + img.shape[0], du : du + img.shape[1]]
         return np.clip(img + 0.5, 0, 255).astype(np.uint8)
 
     def _ball(self, img: NDArray, ball: NDArray[np.float64]) -> None:
@@ -284,7 +303,7 @@ def render_video(
             stream.pix_fmt = "yuv420p"
             stream.time_base = time_base
             stream.codec_context.time_base = time_base
-            stream.options = {"crf": str(scene.crf), "preset": "veryfast"}
+            stream.options = {"crf": str(scene.crf), "preset": "ultrafast"}
             hidden = set(scene.hidden)
             for i, ti in enumerate(t):
                 img = renderer.frame(ti, None if i in hidden else ball[i])

@@ -52,8 +52,10 @@ class Scene(NamedTuple):
         Exposure time as a fraction of the frame interval.
     noise : float
         Standard deviation of the sensor noise, grey levels.
-    mark_radius, mark_at : float
-        Radius of the round mark and its distance from the axis, in units of P.
+    mark_radius : float
+        Radius of the round mark, in units of the ball's radius R.
+    mark_at : float
+        Distance of the mark from the axis, in units of P.
     crf : int
         Quality of the H.264 encoding (libx264's constant rate factor; 0 is lossless).
     hidden : tuple of int
@@ -68,7 +70,7 @@ class Scene(NamedTuple):
     duration: float = 2.0
     shutter: float = 0.5
     noise: float = 3.0
-    mark_radius: float = 0.025
+    mark_radius: float = 0.5
     mark_at: float = 0.88
     crf: int = 18
     hidden: tuple[int, ...] = ()
@@ -178,7 +180,7 @@ class _Renderer:
         img = img.reshape(self.base.shape)
         times = t + self.exposure * (np.arange(BLUR_SAMPLES) + 0.5) / BLUR_SAMPLES
         # the mark: a disc on the platter, at angle Omega t
-        rho, at = sc.mark_radius * sc.platter_radius, sc.mark_at * sc.platter_radius
+        rho, at = sc.mark_radius * self.radius, sc.mark_at * sc.platter_radius
         marks = at * np.column_stack([np.cos(self.omega * times), np.sin(self.omega * times)])
         centre = camera.project(pose, marks.mean(axis=0))
         half = (rho + at * self.omega * self.exposure) / self.foot[

@@ -61,11 +61,11 @@ setup: $(STAMP) $(DOCS_STAMP)
 
 $(BUILD_STAMP): pyproject.toml constraints.txt
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(PIP_INSTALL) -e ".[workflow,notebooks]"
+	$(PIP_INSTALL) -e ".[workflow,notebooks,video]"
 	touch $(BUILD_STAMP)
 
 $(STAMP): $(BUILD_STAMP)
-	$(PIP_INSTALL) -e ".[workflow,test,dev,notebooks]"
+	$(PIP_INSTALL) -e ".[workflow,test,dev,notebooks,video]"
 	touch $(STAMP)
 
 $(DOCS_STAMP): $(BUILD_STAMP)
@@ -105,7 +105,7 @@ cluster-test: $(STAMP)
 # Re-resolve the newest versions into constraints.txt (needs the network).
 lock:
 	rm -rf .lockvenv && $(PYTHON) -m venv .lockvenv
-	.lockvenv/bin/pip install --quiet ".[workflow,test,dev,notebooks,docs,slurm]"
+	.lockvenv/bin/pip install --quiet ".[workflow,test,dev,notebooks,docs,slurm,video]"
 	{ echo "# Exact versions of every package the project installs (pip constraints)."; \
 	  echo "# Regenerate: make lock"; \
 	  .lockvenv/bin/pip freeze --all --exclude-editable | grep -v -e '^turntable' -e '^pip=='; } > constraints.txt

@@ -38,8 +38,9 @@ from typing import Any, NoReturn
 import numpy as np
 
 from turntable import film as film_io
-from turntable import fit
+from turntable import fit, tracker
 from turntable._json import finite_or_none
+from turntable._plot_check import check_plot
 
 #: The claims report ``turntable claims`` reads unless told another (written by ``make``).
 DEFAULT_CLAIMS_REPORT = "results/claims.json"
@@ -92,9 +93,21 @@ def _parser() -> argparse.ArgumentParser:
     )
     p.add_argument("data", metavar="DATA.csv", help="tracked positions (t, x, y) in s and m")
     p.add_argument("--radius", type=float, required=True, metavar="R", help="ball radius, m")
-    rate = p.add_mutually_exclusive_group(required=True)
-    rate.add_argument("--omega", type=float, metavar="W", help="turntable rate, rad/s")
+    rate = p.add_mutually_exclusive_group()
+    rate.add_argument(
+        "--omega", type=float, metavar="W", help="turntable rate, rad/s (of a video: measured)"
+    )
     rate.add_argument("--rpm", type=float, metavar="N", help="turntable rate, revolutions/min")
+    from turntable.video.cli import add_video_options
+
+    add_video_options(p, None)
+    p.add_argument(
+        "--units",
+        choices=sorted(tracker.UNITS),
+        default="m",
+        help="units of the positions of a Tracker export (as calibrated in Tracker; default m)",
+    )
+    p.add_argument("--track", metavar="NAME", help="the track of a Tracker export of several")
     p.add_argument(
         "--k", type=float, default=0.4, help="inertia ratio I/(m R^2) (default 0.4, solid ball)"
     )
@@ -102,9 +115,9 @@ def _parser() -> argparse.ArgumentParser:
         "--axis",
         type=float,
         nargs=2,
-        default=(0.0, 0.0),
         metavar=("X", "Y"),
-        help="position of the turntable's axis in the data's coordinates, m (default 0 0)",
+        help="position of the turntable's axis in the data's coordinates, m (default 0 0, "
+        "which is where turntable track puts it)",
     )
     p.add_argument(
         "--mass", type=float, metavar="M", help="ball mass, kg: adds dimensional coefficients"
@@ -124,6 +137,9 @@ def _parser() -> argparse.ArgumentParser:
         "--plot", metavar="FIG.png", help="draw data, both fits and the residuals (matplotlib)"
     )
     _add_claims_parser(sub)
+    from turntable.video.cli import add_parser
+
+    add_parser(sub)
     return parser
 
 
@@ -196,26 +212,6 @@ def _write_json(out: dict[str, Any]) -> None:
         raise SystemExit(1) from None
 
 
-def _check_plot(path: str) -> None:
-    try:
-        from matplotlib.backend_bases import FigureCanvasBase
-    except ImportError:
-        _fail(
-            "turntable fit: error: --plot needs matplotlib, which cannot be imported "
-            "(pip install matplotlib)"
-        )
-    formats = FigureCanvasBase.get_supported_filetypes()
-    suffix = Path(path).suffix.lstrip(".").lower()
-    if suffix not in formats:
-        _fail(
-            f"turntable fit: error: --plot {path}: unknown format {suffix!r} "
-            f"(use one of {', '.join(sorted(formats))})"
-        )
-    folder = Path(path).resolve().parent
-    if not folder.is_dir() or not os.access(folder, os.W_OK):
-        _fail(f"turntable fit: error: --plot: cannot write into the folder {folder}")
-
-
 def _bounds(setup: film_io.Setup) -> dict[str, tuple[float, float]]:
     """Values the fit can take: |x - axis| / R and |t| Omega up to `MAX_DIMENSIONLESS`."""
     span = MAX_DIMENSIONLESS * setup.radius
@@ -228,27 +224,28 @@ def _bounds(setup: film_io.Setup) -> dict[str, tuple[float, float]]:
     }
 
 
-def fit_command(args: argparse.Namespace) -> int:
-    """Run ``turntable fit``: check everything, fit, print the JSON and the warnings, draw."""
-    _positive("--radius", args.radius, "m")
-    _positive("--omega", args.omega, "rad/s")
-    _positive("--rpm", args.rpm, "revolutions per minute")
-    _positive("--k", args.k, "dimensionless")
-    _positive("--mass", args.mass, "kg")
-    if not all(math.isfinite(a) for a in args.axis):
-        _fail(f"turntable fit: error: --axis must be two finite numbers (m); got {args.axis}")
-    if args.plot is not None:
-        _check_plot(args.plot)
-    omega = args.omega if args.omega is not None else film_io.rpm_to_omega(args.rpm)
-    setup = film_io.Setup(args.radius, omega, args.k, (args.axis[0], args.axis[1]))
-    options = {"fit_omega": args.fit_omega, "fit_axis": args.fit_axis}
-    p = max(fit.n_parameters(m, **options) for m in fit.MODELS)
-    why = f"2 coordinates each, more than the {p} parameters of the slipping model"
+def _read(path: str, setup: film_io.Setup, p: int, args: argparse.Namespace) -> film_io.Film:
+    """The film of a CSV file or a Tracker export, or one line and exit status 2."""
+    if tracker.is_tracker(path):
+        try:
+            data, label = tracker.read_tracker(path, args.track, tracker.UNITS[args.units])
+        except film_io.FilmError as exc:
+            _fail(f"turntable fit: error: {exc}")
+        if data.t.size < p // 2 + 1:
+            _fail(
+                f"turntable fit: error: {path}: track {label!r} has {data.t.size} frames with "
+                f"t, x and y; at least {p // 2 + 1} are needed"
+            )
+        _warn(
+            f"{path}: Tracker's track {label!r}, its positions read in {args.units} (the units "
+            "calibrated in Tracker, which the file does not say: --units), its times in s"
+        )
+        return data
     try:
-        data = film_io.read_film(
-            args.data,
+        return film_io.read_film(
+            path,
             min_rows=p // 2 + 1,
-            why=why,
+            why=f"2 coordinates each, more than the {p} parameters of the slipping model",
             bounds=_bounds(setup),
             bounds_why=(
                 f"too large for the fit: |x - axis| and |y - axis| must stay below "
@@ -258,6 +255,55 @@ def fit_command(args: argparse.Namespace) -> int:
         )
     except film_io.FilmError as exc:
         _fail(f"turntable fit: error: {exc}")
+
+
+def fit_command(args: argparse.Namespace) -> int:
+    """Run ``turntable fit``: check everything, fit, print the JSON and the warnings, draw."""
+    _positive("--radius", args.radius, "m")
+    _positive("--omega", args.omega, "rad/s")
+    _positive("--rpm", args.rpm, "revolutions per minute")
+    _positive("--k", args.k, "dimensionless")
+    _positive("--mass", args.mass, "kg")
+    axis = (0.0, 0.0) if args.axis is None else (args.axis[0], args.axis[1])
+    if not all(math.isfinite(a) for a in axis):
+        _fail(f"turntable fit: error: --axis must be two finite numbers (m); got {args.axis}")
+    if args.plot is not None:
+        check_plot(args.plot, "turntable fit")
+    from turntable.video.cli import VIDEO_SUFFIXES
+
+    video = args.platter_radius is not None or Path(args.data).suffix.lower() in VIDEO_SUFFIXES
+    if video and args.platter_radius is None:
+        _fail(f"turntable fit: error: {args.data} is a video: give --platter-radius P (m)")
+    if not video and args.omega is None and args.rpm is None:
+        _fail("turntable fit: error: one of the arguments --omega --rpm is required")
+    options = {"fit_omega": args.fit_omega, "fit_axis": args.fit_axis}
+    p = max(fit.n_parameters(m, **options) for m in fit.MODELS)
+    tracked = None
+    if video:
+        _positive("--platter-radius", args.platter_radius, "m")
+        from turntable.video.cli import run_tracking
+
+        tracked, notes = run_tracking(
+            args.data, args.radius, args.platter_radius, args.rpm, "turntable fit"
+        )
+        for message in notes:
+            _warn(message)
+    if args.omega is not None:
+        omega = args.omega
+    elif args.rpm is not None:
+        omega = film_io.rpm_to_omega(args.rpm)
+    else:
+        omega = abs(tracked.calibration.omega)
+    setup = film_io.Setup(args.radius, omega, args.k, axis)
+    if tracked is not None:
+        data = tracked.film
+        if data.t.size < p // 2 + 1:
+            _fail(
+                f"turntable fit: error: {args.data}: the ball was found on {data.t.size} frames; "
+                f"at least {p // 2 + 1} are needed"
+            )
+    else:
+        data = _read(args.data, setup, p, args)
     # Extreme but accepted numbers may overflow inside the fit; what that does to the result
     # is reported (None in the JSON, a warning), not numpy's RuntimeWarning lines.
     with warnings.catch_warnings(), np.errstate(all="ignore"):
@@ -266,6 +312,12 @@ def fit_command(args: argparse.Namespace) -> int:
         check = fit.consistency(data, setup, result, **options)
         out = finite_or_none(
             fit.result_json(result, setup, data, args.mass, source=args.data, check=check)
+        )
+    if tracked is not None:
+        from turntable.video.track import video_summary
+
+        out["video"] = finite_or_none(
+            video_summary(tracked, given_omega=omega != abs(tracked.calibration.omega))
         )
     _write_json(out)
     for message in out["warnings"]:
@@ -291,6 +343,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         return fit_command(args)
     if args.command == "claims":
         return claims_command(args)
+    if args.command == "track":
+        from turntable.video.cli import track_command
+
+        return track_command(args)
     raise AssertionError(args.command)  # argparse allows only the commands above
 
 

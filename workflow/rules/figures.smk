@@ -12,6 +12,16 @@ EXTRA = {
         "params": {"films": FILM_SPECS},
         "input": {"csv": FILM_CSV, "json": FILM_FITS},
     },
+    "fig10_video": {
+        "params": {"film": config["film"]},
+        "input": {
+            "video": VIDEO,
+            "truth": VIDEO_TRUTH,
+            "track": VIDEO_TRACK,
+            "calibration": VIDEO_TRACK.replace(".csv", ".json"),
+            "fit": VIDEO_FIT,
+        },
+    },
 }
 
 

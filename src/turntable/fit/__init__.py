@@ -52,6 +52,7 @@ from turntable.fit.diagnose import (
     consistency,
     frame_step,
     problems,
+    undescribed,
 )
 from turntable.fit.io import (
     fitted_coefficient,
@@ -148,5 +149,6 @@ __all__ = [
     "simulate_film",
     "start_values",
     "synthetic_header",
+    "undescribed",
     "whiteness",
 ]

@@ -153,6 +153,37 @@ def consistency(
     return Consistency(refit, freed, model, omega_z, axis_z, changed)
 
 
+def undescribed(result: FilmFit) -> str:
+    """Why the selected model does not describe the film ("" if it does, or none is selected).
+
+    A selection rests on the selected model fitting the film to its noise: residuals that
+    are correlated from frame to frame (`whiteness`) leave structure that neither model
+    follows, and a coefficient at the end of its search range is no measurement (a ball
+    moving in a straight line is the slipping model's mu0 -> 0, but not a friction).  The
+    AICc difference then weighs two wrong models, and says nothing about the friction.
+    """
+    if result.selected is None:
+        return ""
+    f = result.fits[result.selected]
+    name = COEFFICIENT[result.selected]
+    why = []
+    if not f.white:
+        why.append(
+            f"its residuals (rms {f.rms_residual:.3g} m) are correlated from frame to frame "
+            f"(lag-1 autocorrelation {f.autocorrelation:.3g}, {abs(f.whiteness_z):.3g} times "
+            "the spread of white noise)"
+        )
+    if f.bound is not None:
+        why.append(f"{name} ran into the {f.bound} end of its search range")
+    if not why:
+        return ""
+    return (
+        f"neither model describes the film: the selected {result.selected} model does not "
+        f"fit it ({'; '.join(why)}); check that the ball rolls freely on a flat platter turning "
+        "at a steady rate, --omega/--rpm, --k, --axis, the sign of y and the units"
+    )
+
+
 def checked_selection(result: FilmFit, check: Consistency | None) -> FilmFit:
     """Return the fit with its selection not decisive where `consistency` contradicts it.
 
@@ -169,7 +200,9 @@ def checked_selection(result: FilmFit, check: Consistency | None) -> FilmFit:
         ``result`` itself, unless its selection is decisive and the check finds the given
         Omega or axis more than `CONSISTENCY_Z` standard errors from the ones the film
         prefers, or selects another model decisively with them free: then a copy with
-        ``decisive`` False and ``reason`` saying why.  (A wrong Omega can make the wrong
+        ``decisive`` False and ``reason`` saying why; and a copy with ``decisive`` False
+        wherever the selected model does not describe the film (`undescribed`).  (A wrong
+        Omega can make the wrong
         model win by a large AICc difference: the difference then measures the fit to the
         wrong rate, not the evidence for the model.)
 
@@ -188,7 +221,12 @@ def checked_selection(result: FilmFit, check: Consistency | None) -> FilmFit:
     >>> result.decisive, checked.decisive
     (True, False)
     """
-    if check is None or not result.decisive:
+    if not result.decisive:
+        return result
+    failed = undescribed(result)
+    if failed:
+        return result._replace(decisive=False, reason=failed)
+    if check is None:
         return result
     why = []
     if check.selection_changed:
@@ -291,6 +329,8 @@ def problems(
             )
     if result.reason:
         out.append(result.reason)
+    elif result.decisive and undescribed(result):
+        out.append(undescribed(result))
     # the relative error of the selected model; of both where the selection is not decisive
     shown = checked_selection(result, check)
     for model in [shown.selected] if shown.selected and shown.decisive else list(result.fits):

@@ -1,0 +1,232 @@
+"""The camera, from the rim of the platter and a mark turning with it.
+
+The rim is a circle of radius P in the plane z = 0; the mark, a point of the platter at a
+distance r_m from the axis, is at the angle phi0 + Omega t.  `calibrate` fits, by least
+squares, a pinhole camera (`turntable.video.camera`: focal length, tilt, roll, look-at
+point, distance; the principal point at the image's centre, square pixels) together with
+r_m, phi0 and Omega, to the image points of the rim and the tracked image of the mark.
+The rim alone (an ellipse: five numbers) cannot fix the camera's perspective; the mark's
+uniform turning fixes the rest, and the axis's image with it.  Weak priors keep the focal
+length (ln f within 1 of ln of the image's width) and the roll (within 1 rad of its start)
+defined where the data cannot: a camera looking straight down, whose image does not depend
+on them.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import NDArray
+from scipy.optimize import least_squares
+
+from turntable.video import camera
+from turntable.video.camera import Pose
+from turntable.video.detect import Ellipse
+
+#: Spread of the priors on ln(focal length / image width) and on the roll (rad).
+PRIOR_LOG_FOCAL = 1.0
+PRIOR_ROLL = 1.0
+
+
+class Calibration(NamedTuple):
+    """The fitted camera and turntable, with standard errors.
+
+    Attributes
+    ----------
+    pose : Pose
+    omega, omega_stderr : float
+        Rate of the platter, rad/s, counterclockwise seen from above (negative: clockwise).
+    mark_radius : float
+        Distance of the mark from the axis, m.
+    derived, stderr : dict
+        tilt_deg, roll_deg, axis_u_px, axis_v_px, m_per_px (at the axis, geometric mean of
+        the two directions), focal_px, distance_m, and their standard errors.
+    rim_rms_px, mark_rms_px : float
+        Rms distance of the rim points and of the mark's images from the fitted camera.
+    mark_lag1 : float
+        Lag-1 autocorrelation of the mark's residuals (the standard errors are widened by
+        sqrt((1 + r) / (1 - r)) for r > 0).
+    """
+
+    pose: Pose
+    omega: float
+    omega_stderr: float
+    mark_radius: float
+    derived: dict[str, float]
+    stderr: dict[str, float]
+    rim_rms_px: float
+    mark_rms_px: float
+    mark_lag1: float
+
+
+def _pose(theta: NDArray, size: tuple[int, int]) -> Pose:
+    return Pose(
+        math.exp(theta[0]), theta[1], theta[2], (theta[3], theta[4]), math.exp(theta[5]), size
+    )
+
+
+def _derived(theta: NDArray, size: tuple[int, int]) -> NDArray[np.float64]:
+    pose = _pose(theta, size)
+    axis = camera.project(pose, np.zeros(2))
+    h_inv = np.linalg.inv(camera.homography(pose))
+    # the Jacobian of image -> plane at the axis's image
+    eps = 0.5
+    d = [
+        (camera.apply(h_inv, axis + e) - camera.apply(h_inv, axis - e)) / (2 * eps)
+        for e in (np.array([eps, 0.0]), np.array([0.0, eps]))
+    ]
+    scale = math.sqrt(abs(np.linalg.det(np.column_stack(d))))
+    return np.array(
+        [
+            math.degrees(theta[1]),
+            math.degrees(theta[2]),
+            axis[0],
+            axis[1],
+            scale,
+            math.exp(theta[0]),
+            math.exp(theta[5]),
+            theta[8] if len(theta) > 8 else math.nan,
+        ]
+    )
+
+
+_DERIVED = ("tilt_deg", "roll_deg", "axis_u_px", "axis_v_px", "m_per_px", "focal_px", "distance_m")
+
+
+class _Problem:
+    def __init__(
+        self, rim_pts, mark_t, mark_uv, size, platter_radius, rim: Ellipse, roll0, rim_frames
+    ):
+        self.rim_frames = rim_frames
+        self.rim_pts, self.mark_t, self.mark_uv = rim_pts, mark_t, mark_uv
+        self.size, self.p = size, platter_radius
+        self.px_per_m = rim.a / platter_radius
+        self.log_f0, self.roll0 = math.log(size[0]), roll0
+        self.sigma_rim = self.sigma_mark = 1.0
+        self.ellipse = rim
+
+    def rim(self, theta: NDArray) -> NDArray:
+        q = camera.back_project(_pose(theta, self.size), self.rim_pts)
+        return (np.hypot(q[:, 0], q[:, 1]) - self.p) * self.px_per_m / self.sigma_rim
+
+    def mark(self, theta: NDArray) -> NDArray:
+        ang = theta[7] + theta[8] * self.mark_t
+        r = math.exp(theta[6])
+        pred = camera.project(
+            _pose(theta, self.size), r * np.column_stack([np.cos(ang), np.sin(ang)])
+        )
+        return ((pred - self.mark_uv) / self.sigma_mark).ravel()
+
+    def priors(self, theta: NDArray) -> NDArray:
+        return np.array(
+            [(theta[0] - self.log_f0) / PRIOR_LOG_FOCAL, (theta[2] - self.roll0) / PRIOR_ROLL]
+        )
+
+    def all(self, theta: NDArray) -> NDArray:
+        return np.concatenate([self.rim(theta), self.mark(theta), self.priors(theta)])
+
+    def rim_only(self, theta6: NDArray) -> NDArray:
+        theta = np.r_[theta6, 0.0, 0.0, 0.0]
+        return np.concatenate([self.rim(theta), self.priors(theta)])
+
+
+def _lag1(e: NDArray) -> float:
+    e = e - e.mean(axis=0)
+    den = float(np.sum(e * e))
+    return float(np.sum(e[1:] * e[:-1]) / den) if den > 0 else 0.0
+
+
+def _fit(prob: _Problem, b0: float, roll0: float):
+    """The camera from the rim alone, then with the mark, each kind of point weighed by its
+    own scatter."""
+    size, rim, platter_radius = prob.size, prob.ellipse, prob.p
+    f0 = float(size[0])
+    theta = np.array([math.log(f0), b0, roll0, 0.0, 0.0, math.log(f0 * platter_radius / rim.a)])
+    for _ in range(2):  # the look-at point that puts the axis at the ellipse's centre
+        q = camera.back_project(_pose(theta, size), np.array(rim.centre))
+        theta[3:5] -= q
+    theta6 = least_squares(prob.rim_only, theta, method="lm", x_scale="jac").x
+    # start of the mark's circle from its images seen through the rim-only camera
+    q = camera.back_project(_pose(np.r_[theta6, 0, 0, 0], size), prob.mark_uv)
+    ang = np.unwrap(np.arctan2(q[:, 1], q[:, 0]))
+    slope, phase = np.polyfit(prob.mark_t, ang, 1)
+    theta = np.r_[theta6, math.log(np.median(np.hypot(q[:, 0], q[:, 1]))), phase, slope]
+    for _ in range(2):
+        fit = least_squares(prob.all, theta, method="lm", x_scale="jac")
+        theta = fit.x
+        # the rim seen on several frames is one edge: its points count as those of one frame,
+        # widened for their correlation along the rim
+        rim_res = prob.rim(theta)
+        r1 = max(_lag1(rim_res[:, None]), 0.0)
+        widen = math.sqrt(prob.rim_frames * (1 + r1) / (1 - min(r1, 0.99)))
+        prob.sigma_rim *= max(float(np.sqrt(np.mean(rim_res**2))), 1e-3) * (widen if _ else 1.0)
+        prob.sigma_mark *= max(float(np.sqrt(np.mean(prob.mark(theta) ** 2))), 1e-3)
+    return least_squares(prob.all, theta, method="lm", x_scale="jac")
+
+
+def calibrate(
+    rim_pts: NDArray[np.float64],
+    rim: Ellipse,
+    mark_t: NDArray[np.float64],
+    mark_uv: NDArray[np.float64],
+    size: tuple[int, int],
+    platter_radius: float,
+    rim_frames: int = 1,
+) -> Calibration:
+    """Fit the camera, the mark's circle and Omega (see the module's docstring).
+
+    Parameters
+    ----------
+    rim_pts : numpy.ndarray
+        Image points (u, v) of the rim, px, shape (n, 2).
+    rim : Ellipse
+        The ellipse fitted to them (the start).
+    mark_t, mark_uv : numpy.ndarray
+        Times (s) and image points (px) of the mark.
+    size : tuple of int
+        (width, height) of the image.
+    platter_radius : float
+        P, m.
+    rim_frames : int
+        Number of frames the rim points come from.
+    """
+    b0 = math.acos(min(rim.b / rim.a, 1.0))
+    best = None
+    for roll0 in (-rim.angle, -rim.angle + math.pi):  # which side of the ellipse is nearer
+        roll0 = (roll0 + math.pi) % (2 * math.pi) - math.pi
+        prob = _Problem(rim_pts, mark_t, mark_uv, size, platter_radius, rim, roll0, rim_frames)
+        fit = _fit(prob, b0, roll0)
+        # compared in pixels: each fit has weighed its points by its own scatter
+        rim_px = prob.rim(fit.x) * prob.sigma_rim
+        score = np.mean((prob.mark(fit.x) * prob.sigma_mark) ** 2) + np.mean(rim_px**2)
+        if best is None or score < best[2]:
+            best = (fit, prob, score)
+    fit, prob, _ = best
+    theta = fit.x
+    jac = fit.jac
+    cov = np.linalg.pinv(jac.T @ jac)
+    mark_res = prob.mark(theta).reshape(-1, 2) * prob.sigma_mark
+    r1 = _lag1(mark_res)
+    if r1 > 0:
+        cov *= (1 + r1) / (1 - r1)
+    g0 = _derived(theta, size)
+    grad = np.empty((g0.size, theta.size))
+    for j in range(theta.size):
+        step = 1e-6 * max(abs(theta[j]), 1.0)
+        e = np.zeros_like(theta)
+        e[j] = step
+        grad[:, j] = (_derived(theta + e, size) - _derived(theta - e, size)) / (2 * step)
+    se = np.sqrt(np.maximum(np.einsum("ij,jk,ik->i", grad, cov, grad), 0.0))
+    return Calibration(
+        pose=_pose(theta, size),
+        omega=float(theta[8]),
+        omega_stderr=float(math.sqrt(max(cov[8, 8], 0.0))),
+        mark_radius=float(math.exp(theta[6])),
+        derived={k: float(v) for k, v in zip(_DERIVED, g0, strict=False)},
+        stderr={k: float(v) for k, v in zip(_DERIVED, se, strict=False)},
+        rim_rms_px=float(np.sqrt(np.mean((prob.rim(theta) * prob.sigma_rim) ** 2))),
+        mark_rms_px=float(np.sqrt(np.mean(mark_res**2))),
+        mark_lag1=r1,
+    )

@@ -1,0 +1,108 @@
+"""A pinhole camera above the platter: the map between the image and planes parallel to it.
+
+The lab frame: the platter is the plane z = 0, its axis the z axis, z up; the ball's
+centre moves in the plane z = R.  The camera looks at the point (lx, ly, 0) from a
+distance d, its optical axis tilted by ``tilt`` from the downward vertical towards +y
+(the camera stands on the side of negative y), and turned by ``roll`` about that axis.
+Image coordinates (u, v) are in pixels, u to the right and v down, pixel centres at whole
+numbers; the principal point is the centre of the image and the pixels are square.  At
+zero tilt and roll, x points right in the image and y up.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+
+class Pose(NamedTuple):
+    """A camera: focal length (px), tilt and roll (rad), look-at point (m), distance (m),
+    image size (px)."""
+
+    focal: float
+    tilt: float
+    roll: float
+    look_at: tuple[float, float]
+    distance: float
+    size: tuple[int, int]  # (width, height)
+
+    @property
+    def principal(self) -> tuple[float, float]:
+        """The image centre (u, v), px."""
+        return (self.size[0] - 1) / 2.0, (self.size[1] - 1) / 2.0
+
+
+def rotation(pose: Pose) -> NDArray[np.float64]:
+    """Rows: the camera's right, down and viewing directions in the lab frame."""
+    b, a = pose.tilt, pose.roll
+    z = np.array([0.0, math.sin(b), -math.cos(b)])
+    x0 = np.array([1.0, 0.0, 0.0])
+    y0 = np.array([0.0, -math.cos(b), -math.sin(b)])
+    return np.array([math.cos(a) * x0 + math.sin(a) * y0, -math.sin(a) * x0 + math.cos(a) * y0, z])
+
+
+def centre(pose: Pose) -> NDArray[np.float64]:
+    """Position of the camera in the lab frame, m."""
+    b = pose.tilt
+    lx, ly = pose.look_at
+    return np.array([lx, ly - pose.distance * math.sin(b), pose.distance * math.cos(b)])
+
+
+def intrinsic(pose: Pose) -> NDArray[np.float64]:
+    cx, cy = pose.principal
+    return np.array([[pose.focal, 0.0, cx], [0.0, pose.focal, cy], [0.0, 0.0, 1.0]])
+
+
+def homography(pose: Pose, height: float = 0.0) -> NDArray[np.float64]:
+    """Return H (3 x 3) with (u, v, 1) ~ H (x, y, 1) for points of the plane z = height.
+
+    Notes
+    -----
+    H = K [r1 r2 (height r3 - Rot c)], with K the intrinsic matrix, r_i the columns of
+    the rotation Rot (`rotation`) and c the camera's centre.
+    """
+    rot = rotation(pose)
+    t = height * rot[:, 2] - rot @ centre(pose)
+    return intrinsic(pose) @ np.column_stack([rot[:, 0], rot[:, 1], t])
+
+
+def apply(h: NDArray[np.float64], points: ArrayLike) -> NDArray[np.float64]:
+    """Apply a homography to points of shape (..., 2)."""
+    p = np.asarray(points, dtype=float)
+    w = p[..., 0, None] * h[2, 0] + p[..., 1, None] * h[2, 1] + h[2, 2]
+    q = np.stack(
+        [
+            p[..., 0] * h[0, 0] + p[..., 1] * h[0, 1] + h[0, 2],
+            p[..., 0] * h[1, 0] + p[..., 1] * h[1, 1] + h[1, 2],
+        ],
+        axis=-1,
+    )
+    return q / w
+
+
+def project(pose: Pose, points: ArrayLike, height: float = 0.0) -> NDArray[np.float64]:
+    """Image points (u, v) of points (x, y) of the plane z = height."""
+    return apply(homography(pose, height), points)
+
+
+def back_project(pose: Pose, pixels: ArrayLike, height: float = 0.0) -> NDArray[np.float64]:
+    """Points (x, y) of the plane z = height seen at the image points ``pixels`` (u, v)."""
+    return apply(np.linalg.inv(homography(pose, height)), pixels)
+
+
+def rays(pose: Pose, u: ArrayLike, v: ArrayLike) -> NDArray[np.float64]:
+    """Unit directions (..., 3), in the lab frame, of the rays through image points."""
+    cx, cy = pose.principal
+    d = np.stack(
+        [
+            (np.asarray(u) - cx) / pose.focal,
+            (np.asarray(v) - cy) / pose.focal,
+            np.ones(np.shape(u)),
+        ],
+        axis=-1,
+    )
+    d = d @ rotation(pose)
+    return d / np.linalg.norm(d, axis=-1, keepdims=True)

@@ -1,0 +1,180 @@
+"""``turntable track VIDEO --ball-radius R --platter-radius P [-o FILM.csv] [--rpm N] [--plot F]``.
+
+Tracks the ball of a video (`turntable.video.track.track_video`) and writes FILM.csv (t, x,
+y in s and m, the lab frame, the axis at the origin; comment lines say how it was made)
+and FILM.json beside it (the calibration with its standard errors, the frame times, the
+lost frames).  Both are written only when everything has succeeded, each under a
+temporary name then renamed.  Bad input gets one line on stderr and exit status 2;
+warnings (lost frames, a given --rpm the video contradicts) one line each.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import sys
+import tempfile
+from pathlib import Path
+from typing import Any
+
+#: Suffixes that `turntable fit` takes for a video rather than a film.
+VIDEO_SUFFIXES = (".mp4", ".mov", ".m4v", ".mkv", ".avi", ".webm", ".mts", ".3gp")
+
+_DESCRIPTION = """\
+Track a ball on a turntable in a video and write the film that `turntable fit` reads.
+
+The first frame must show the whole platter, in contrast with what surrounds it, the ball
+in contrast with the platter, and a mark on the platter near its rim (another size than
+the ball).  Writes FILM.csv (t, x, y: s from the first frame, by the container's
+timestamps; the ball's centre in m, in the lab frame, the axis at the origin, the platter
+turning counterclockwise) and FILM.json (camera, Omega, metres per pixel, the image of the
+axis, each with its standard error; the frame times; the frames where the ball was lost,
+which are gaps of the film)."""
+
+
+def add_parser(sub: Any) -> None:
+    """Add the ``track`` command to the subparsers of ``turntable``."""
+    p = sub.add_parser(
+        "track",
+        help="track the ball of a video: the film that turntable fit reads",
+        description=_DESCRIPTION,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    p.add_argument("video", metavar="VIDEO", help="the video (any format FFmpeg reads)")
+    add_video_options(p, "--ball-radius")
+    p.add_argument(
+        "-o", "--output", metavar="FILM.csv", help="the film (default: VIDEO with suffix .csv)"
+    )
+    p.add_argument(
+        "--rpm", type=float, metavar="N", help="the platter's rate, checked against the video's"
+    )
+    p.add_argument(
+        "--plot", metavar="FIG.png", help="draw the first frame with the rim, axis, mark, track"
+    )
+
+
+def add_video_options(p: argparse.ArgumentParser, radius: str | None) -> None:
+    """--ball-radius (when ``radius`` names it) and --platter-radius."""
+    if radius:
+        p.add_argument(radius, type=float, required=True, metavar="R", help="ball radius, m")
+    p.add_argument(
+        "--platter-radius", type=float, metavar="P", help="radius of the platter's rim, m"
+    )
+
+
+def fail(message: str) -> None:
+    print(message, file=sys.stderr)
+    raise SystemExit(2)
+
+
+def check_number(option: str, value: float | None) -> None:
+    if value is not None and not (math.isfinite(value) and value > 0):
+        fail(f"turntable track: error: {option} must be a finite number > 0; got {value}")
+
+
+def run_tracking(
+    video: str, ball_radius: float, platter_radius: float, rpm: float | None, prog: str
+):
+    """Track, or fail with one line (exit status 2); return (track, warnings)."""
+    try:
+        import av  # noqa: F401
+        import cv2  # noqa: F401
+
+        from turntable.video.decode import VideoError
+        from turntable.video.track import track_video
+    except ImportError as exc:
+        fail(
+            f"{prog}: error: reading a video needs the extra [video] ({exc.name} is missing): "
+            "pip install 'turntable[video]'"
+        )
+    if platter_radius <= ball_radius:
+        fail(f"{prog}: error: --platter-radius {platter_radius:g} m must exceed the ball's radius")
+    try:
+        return track_video(video, ball_radius, platter_radius, rpm)
+    except VideoError as exc:
+        fail(f"{prog}: error: {' '.join(str(exc).split())}")
+
+
+def header(track: Any, json_name: str) -> list[str]:
+    cal, info = track.calibration, track.info
+    d, se = cal.derived, cal.stderr
+    lines = []
+    if info.synthetic:
+        lines.append(
+            f"SYNTHETIC: tracked from a rendered video, not a filmed ball ({Path(info.path).name})"
+        )
+    lines += [
+        f"tracked by turntable track from {Path(info.path).name} ({info.width}x{info.height}, "
+        f"{track.times.size} frames, {info.codec}); calibration in {json_name}",
+        "t: s from the first frame (container timestamps); x, y: the ball's centre, m, lab "
+        "frame, axis at the origin, platter turning counterclockwise"
+        + (" (y mirrored: it turns clockwise seen from above)" if track.mirrored else ""),
+        f"Omega = {abs(cal.omega):.7g} +- {cal.omega_stderr:.2g} rad/s; tilt = "
+        f"{d['tilt_deg']:.3f} +- {se['tilt_deg']:.2g} deg; {d['m_per_px'] * 1e3:.5g} mm/px at "
+        f"the axis",
+        f"frames where the ball was lost (gaps): {len(track.lost)}",
+    ]
+    return lines
+
+
+def write_outputs(csv_path: Path, track: Any, cal_json: dict[str, Any]) -> None:
+    """Write FILM.csv and FILM.json, each under a temporary name, then rename both."""
+    from turntable.film import write_film
+
+    json_path = csv_path.with_suffix(".json")
+    fd, tmp = tempfile.mkstemp(dir=csv_path.parent, prefix=f".{json_path.name}.", suffix=".tmp")
+    try:
+        with os.fdopen(fd, "w") as fh:
+            json.dump(cal_json, fh, indent=1, allow_nan=False)
+            fh.write("\n")
+        os.chmod(tmp, 0o644)
+        write_film(csv_path, track.film, header(track, json_path.name))
+        os.replace(tmp, json_path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+
+
+def track_command(args: argparse.Namespace) -> int:
+    """Run ``turntable track``."""
+    from turntable._plot_check import check_plot
+
+    prog = "turntable track"
+    if args.platter_radius is None:
+        fail(f"{prog}: error: the following arguments are required: --platter-radius")
+    check_number("--ball-radius", args.ball_radius)
+    check_number("--platter-radius", args.platter_radius)
+    check_number("--rpm", args.rpm)
+    out = Path(args.output or Path(args.video).with_suffix(".csv"))
+    if out.suffix.lower() == ".json":
+        fail(f"{prog}: error: -o {out}: the film is a .csv; its calibration goes beside it (.json)")
+    folder = out.resolve().parent
+    if not folder.is_dir() or not os.access(folder, os.W_OK):
+        fail(f"{prog}: error: -o {out}: cannot write into the folder {folder}")
+    if args.plot is not None:
+        check_plot(args.plot, prog)
+    track, warnings = run_tracking(
+        args.video, args.ball_radius, args.platter_radius, args.rpm, prog
+    )
+    from turntable.video.track import calibration_json
+
+    write_outputs(out, track, calibration_json(track, args.ball_radius, args.platter_radius))
+    for w in warnings:
+        print(f"{prog}: warning: {w}", file=sys.stderr)
+    cal = track.calibration
+    print(
+        f"{out}: {track.film.t.size} frames of the ball ({len(track.lost)} lost); Omega = "
+        f"{abs(cal.omega):.6g} +- {cal.omega_stderr:.2g} rad/s; tilt "
+        f"{cal.derived['tilt_deg']:.2f} deg; calibration in {out.with_suffix('.json')}"
+    )
+    if args.plot is not None:
+        try:
+            from turntable.video.plot import plot_track
+
+            plot_track(args.plot, track)
+        except Exception as exc:
+            print(f"{prog}: error: --plot {args.plot}: {exc}", file=sys.stderr)
+            return 1
+    return 0

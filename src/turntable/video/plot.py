@@ -1,0 +1,47 @@
+"""Drawing a tracked video: its first frame with the rim, the axis, the mark and the track."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from turntable.video import camera
+
+
+def draw_frame(ax: Any, track: Any) -> None:
+    """The first frame, grey, with the fitted rim (the circle of radius P seen by the fitted
+    camera), the image of the axis, the mark's circle and its images, the ball's track."""
+    cal = track.calibration
+    ax.imshow(track.first_frame, cmap="gray", vmin=0, vmax=255, interpolation="nearest")
+    s = np.linspace(0, 2 * math.pi, 361)
+    rim = camera.project(cal.pose, platter_circle(track, s))
+    ax.plot(rim[:, 0], rim[:, 1], color="tab:orange", lw=0.8, label="rim (fitted camera)")
+    mark = camera.project(cal.pose, cal.mark_radius * np.column_stack([np.cos(s), np.sin(s)]))
+    ax.plot(mark[:, 0], mark[:, 1], color="tab:cyan", lw=0.6, ls="--", label="mark's circle")
+    ax.plot(*track.mark_image[0], "o", mfc="none", color="tab:cyan", ms=6, label="mark")
+    axis = camera.project(cal.pose, np.zeros(2))
+    ax.plot(*axis, "+", color="tab:red", ms=10, mew=1.2, label="axis")
+    ax.plot(track.image[:, 0], track.image[:, 1], color="tab:green", lw=0.8, label="ball's track")
+    ax.set(xlim=(0, track.info.width - 1), ylim=(track.info.height - 1, 0), xticks=[], yticks=[])
+
+
+def platter_circle(track: Any, s: np.ndarray) -> np.ndarray:
+    """Points of the rim in the plane (radius P from the calibration's scale)."""
+    p = track.platter_radius
+    return p * np.column_stack([np.cos(s), np.sin(s)])
+
+
+def plot_track(path: str, track: Any) -> None:
+    """Draw `draw_frame` into the file ``path`` (matplotlib, Agg)."""
+    from matplotlib.figure import Figure
+
+    w, h = track.info.width, track.info.height
+    fig = Figure(figsize=(6.4, 6.4 * h / w + 0.4), layout="constrained")
+    ax = fig.add_subplot()
+    draw_frame(ax, track)
+    synthetic = "SYNTHETIC video: " if track.info.synthetic else ""
+    ax.set_title(f"{synthetic}{track.info.path}", fontsize=8)
+    ax.legend(fontsize=6, loc="lower right")
+    fig.savefig(path, dpi=150)

@@ -1,0 +1,408 @@
+"""From a video to a film: the ball's centre in the lab frame, frame by frame.
+
+`track_video` reads the video once.  On the first frame it finds the platter (`find_platter`,
+its rim refined to a fraction of a pixel), the ball (the blob of the platter whose area is
+closest to that of a ball of radius R seen there) and the mark (the largest other blob in
+the outer part of the platter).  It then follows both from frame to frame in windows about
+where they are expected, and collects the rim's points on a dozen frames spread over the
+video.  `calibrate` then fits the camera and Omega; the ball's image, whose centre is R
+above the platter, is mapped to the plane z = R.  A frame where the ball is not found is a
+gap of the film (never a guessed position), named in the warnings.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from typing import Any, NamedTuple
+
+import numpy as np
+from numpy.typing import NDArray
+
+from turntable.film import Film
+from turntable.video import camera
+from turntable.video.calibrate import Calibration, calibrate
+from turntable.video.decode import Video, VideoError, VideoInfo
+from turntable.video.detect import Blob, Ellipse, blobs, find_platter, levels, refine_rim, window
+
+#: Rim points are collected on this many frames, spread over the video.
+RIM_FRAMES = 12
+#: A blob differs from the platter's grey level by at least this many times the platter's
+#: spread (and at least `MIN_CONTRAST` levels).
+CONTRAST_SPREAD, MIN_CONTRAST = 5.0, 12.0
+#: Fewest frames in which the mark must be found.
+MIN_MARK_FRAMES = 10
+
+
+class Track(NamedTuple):
+    """A tracked video.
+
+    Attributes
+    ----------
+    film : Film
+        Times (s, from the first frame) and the ball's centre (m) in the lab frame of
+        `turntable.video.camera` (the axis at the origin), y mirrored if the platter turns
+        clockwise seen from above, so that it turns counterclockwise in (x, y); only the
+        frames where the ball was found.
+    calibration : Calibration
+    info : VideoInfo
+    lost : list of int
+        Frames where the ball was not found (gaps of the film).
+    image : numpy.ndarray
+        The ball's image centre (u, v) in px for every frame (nan where lost).
+    mark_image : numpy.ndarray
+        The mark's image (u, v) in px for every frame (nan where not found).
+    rim : Ellipse
+    first_frame : numpy.ndarray
+        The first frame (grey), for drawing.
+    mirrored : bool
+        Whether y was mirrored (the platter turns clockwise seen from above).
+    times : numpy.ndarray
+        Time of every frame, s from the first.
+    ball_radius, platter_radius : float
+        R and P, m.
+    """
+
+    film: Film
+    calibration: Calibration
+    info: VideoInfo
+    lost: list[int]
+    image: NDArray[np.float64]
+    mark_image: NDArray[np.float64]
+    rim: Ellipse
+    first_frame: NDArray[np.uint8]
+    mirrored: bool
+    times: NDArray[np.float64]
+    ball_radius: float
+    platter_radius: float
+
+
+def frame_ranges(frames: list[int]) -> str:
+    """'3, 7-9, 12' for [3, 7, 8, 9, 12]."""
+    out, start = [], None
+    for i, f in enumerate(frames):
+        if start is None:
+            start = f
+        if i + 1 == len(frames) or frames[i + 1] != f + 1:
+            out.append(str(start) if start == f else f"{start}-{f}")
+            start = None
+    return ", ".join(out)
+
+
+class _State:
+    """What is followed from frame to frame."""
+
+    def __init__(self) -> None:
+        self.last: NDArray | None = None
+        self.prev: NDArray | None = None
+        self.misses = 0
+
+    def predict(self) -> NDArray:
+        assert self.last is not None
+        if self.prev is None or self.misses:
+            return self.last
+        return 2 * self.last - self.prev
+
+    def found(self, uv: NDArray) -> None:
+        self.prev = None if self.misses else self.last
+        self.last, self.misses = uv, 0
+
+
+def _pick(found: list[Blob], near: NDArray, area: float) -> Blob | None:
+    ok = [b for b in found if 0.25 * area < b.area < 4.0 * area]
+    if not ok:
+        return None
+    return min(
+        ok,
+        key=lambda b: math.hypot(b.u - near[0], b.v - near[1]) + 3 * abs(math.log(b.area / area)),
+    )
+
+
+def _first(img, rim, platter_level, spread, allowed, ball_area) -> tuple[Blob, float, Blob]:
+    """Ball and mark on the first frame, with the sign of the ball's contrast."""
+    full = (slice(0, img.shape[0]), slice(0, img.shape[1]))
+    threshold = max(CONTRAST_SPREAD * spread, MIN_CONTRAST)
+    found = [
+        (s, b) for s in (1.0, -1.0) for b in blobs(img, full, platter_level, s, threshold, allowed)
+    ]
+    candidates = [(s, b) for s, b in found if 0.5 * ball_area < b.area < 2.0 * ball_area]
+    if not candidates:
+        raise VideoError(
+            f"no ball found on the first frame: no blob of about {ball_area:.0f} px (a ball of "
+            f"the given radius) differs from the platter by {threshold:.0f} grey levels or more"
+        )
+    sign, ball = min(candidates, key=lambda sb: abs(math.log(sb[1].area / ball_area)))
+    others = [
+        b
+        for s, b in found
+        if b is not ball and b.area >= 4 and 0.6 < rim.radius(np.array([[b.u, b.v]]))[0] < 0.98
+    ]
+    if not others:
+        raise VideoError(
+            "no mark found on the platter: put a small mark of another size than the ball "
+            "near the rim, in contrast with the platter"
+        )
+    return ball, sign, max(others, key=lambda b: b.area)
+
+
+def track_video(
+    path: str | os.PathLike[str],
+    ball_radius: float,
+    platter_radius: float,
+    rpm: float | None = None,
+) -> tuple[Track, list[str]]:
+    """Track the ball of a video; return the track and the warnings (one line each).
+
+    Raises
+    ------
+    VideoError
+        A video that cannot be read or has no frame, no platter, no ball or no mark on its
+        first frame, a ball that reaches the platter's rim or the image's edge, a mark lost
+        in nearly every frame.
+    """
+    with Video(path) as video:
+        return _track(video, ball_radius, platter_radius, rpm)
+
+
+def _track(video: Video, ball_radius: float, platter_radius: float, rpm: float | None):
+    info = video.info
+    name = info.path
+    times: list[float] = []
+    ball_uv: list[tuple[float, float]] = []
+    mark_uv: list[tuple[float, float]] = []
+    rim_pts: list[NDArray] = []
+    every = max(info.frames // RIM_FRAMES, 1) if info.frames else 30
+    ball, mark = _State(), _State()
+    for index, t, img in video.frames():
+        if index == 0:
+            first = img.copy()
+            rim0 = find_platter(img)
+            if rim0 is None:
+                raise VideoError(
+                    f"{name}: no platter found on the first frame: no elliptic region in "
+                    "contrast with its surroundings lies wholly inside the image"
+                )
+            platter_level, outside = levels(img, rim0)
+            rim, pts = refine_rim(img, rim0, (platter_level + outside) / 2)
+            inner = rim.mask(img.shape, 0.9)
+            spread = 1.4826 * float(np.median(np.abs(img[inner] - platter_level)))
+            allowed = rim.mask(img.shape, 1.0 - 3.0 / rim.b)
+            r_px = ball_radius / platter_radius * rim.a
+            ball_area = math.pi * r_px**2
+            b0, sign, m0 = _first(img, rim, platter_level, spread, allowed, ball_area)
+            threshold = max(CONTRAST_SPREAD * spread, MIN_CONTRAST)
+            mark_sign = sign if b0.area else 1.0
+            mark_area, ball_area = m0.area, b0.area
+            r_mark = math.sqrt(mark_area / math.pi)
+            mark_step = (
+                (rpm / 60 * 2 * math.pi if rpm else 8.0) * rim.a * 0.95 / (info.rate or 30.0)
+            )
+        times.append(t)
+        if index % every == 0 and index:
+            rim_pts.append(_rim_points(img, rim, platter_level, outside))
+        elif index == 0:
+            rim_pts.append(pts)
+        # the ball
+        if index == 0:
+            found: Blob | None = b0
+        else:
+            near = ball.predict()
+            half = (
+                2.5 * r_px
+                + 4
+                + (ball.misses + 1)
+                * (0 if ball.prev is None else float(np.hypot(*(ball.last - ball.prev))) + 2 * r_px)
+            )
+            box = window(tuple(near), half, img.shape)
+            found = _pick(blobs(img, box, platter_level, sign, threshold, allowed), near, ball_area)
+        if found is not None and found.touches:
+            where = (
+                "the platter's rim" if _inside_image(found, img.shape, r_px) else "the image's edge"
+            )
+            raise VideoError(
+                f"{name}: the ball reaches {where} at frame {index} (t = {t:.3f} s): cut the "
+                "video before it does"
+            )
+        if found is None:
+            ball.misses += 1
+            ball_uv.append((math.nan, math.nan))
+        else:
+            ball.found(np.array([found.u, found.v]))
+            ball_uv.append((found.u, found.v))
+        # the mark
+        if index == 0:
+            m: Blob | None = m0
+        else:
+            near = mark.predict()
+            half = (
+                3 * r_mark
+                + 4
+                + (
+                    mark_step
+                    if mark.prev is None
+                    else float(np.hypot(*(mark.last - mark.prev))) + 2
+                )
+                * (mark.misses + 1)
+            )
+            box = window(tuple(near), half, img.shape)
+            m = _pick(
+                blobs(img, box, platter_level, mark_sign, threshold, allowed), near, mark_area
+            )
+        if m is None:
+            mark.misses += 1
+            mark_uv.append((math.nan, math.nan))
+        else:
+            mark.found(np.array([m.u, m.v]))
+            mark_uv.append((m.u, m.v))
+    if not times:
+        raise VideoError(f"{name}: the video has no frame")
+    return _finish(
+        info,
+        np.array(times),
+        np.array(ball_uv),
+        np.array(mark_uv),
+        rim_pts,
+        rim,
+        first,
+        ball_radius,
+        platter_radius,
+        rpm,
+    )
+
+
+def _inside_image(b: Blob, shape: tuple[int, int], r_px: float) -> bool:
+    m = 1.5 * r_px + 2
+    return m < b.u < shape[1] - 1 - m and m < b.v < shape[0] - 1 - m
+
+
+def _rim_points(img, rim, platter_level, outside) -> NDArray:
+    from turntable.video.detect import rim_points
+
+    pts = rim_points(img, rim, (platter_level + outside) / 2)
+    dev = (rim.radius(pts) - 1.0) * rim.b
+    return pts[np.abs(dev) < 1.5]
+
+
+def _finish(info, t, ball_uv, mark_uv, rim_pts, rim, first, ball_radius, platter_radius, rpm):
+    t0 = t[0]
+    t = t - t0
+    ok_mark = np.isfinite(mark_uv[:, 0])
+    if ok_mark.sum() < MIN_MARK_FRAMES:
+        raise VideoError(
+            f"{info.path}: the mark was found on {int(ok_mark.sum())} frames only (at least "
+            f"{MIN_MARK_FRAMES} are needed to measure the platter's rate)"
+        )
+    cal = calibrate(
+        np.vstack(rim_pts),
+        rim,
+        t[ok_mark],
+        mark_uv[ok_mark],
+        (info.width, info.height),
+        platter_radius,
+        len(rim_pts),
+    )
+    ok = np.isfinite(ball_uv[:, 0])
+    xy = camera.back_project(cal.pose, ball_uv[ok], height=ball_radius)
+    mirrored = cal.omega < 0
+    if mirrored:
+        xy[:, 1] *= -1
+    warnings: list[str] = []
+    lost = [int(i) for i in np.flatnonzero(~ok)]
+    if lost:
+        warnings.append(
+            f"the ball was not found on {len(lost)} of {t.size} frames ({frame_ranges(lost)}): "
+            "they are gaps of the film"
+        )
+    omega = abs(cal.omega)
+    if rpm is not None:
+        given = 2 * math.pi * rpm / 60
+        z = (omega - given) / cal.omega_stderr if cal.omega_stderr > 0 else math.inf
+        if abs(z) > 4 and abs(omega / given - 1) > 1e-3:
+            warnings.append(
+                f"the platter turns at {omega * 60 / (2 * math.pi):.5g} +- "
+                f"{cal.omega_stderr * 60 / (2 * math.pi):.2g} rpm in the video, not at the given "
+                f"--rpm {rpm:g}"
+            )
+    film = Film(t[ok], xy[:, 0], xy[:, 1], synthetic=info.synthetic)
+    track = Track(
+        film,
+        cal,
+        info,
+        lost,
+        ball_uv,
+        mark_uv,
+        rim,
+        first,
+        mirrored,
+        t,
+        ball_radius,
+        platter_radius,
+    )
+    return track, warnings
+
+
+def calibration_json(track: Track, ball_radius: float, platter_radius: float) -> dict[str, Any]:
+    """The calibration of a track as the JSON object written beside the film."""
+    cal = track.calibration
+    info = track.info
+    return {
+        "video": {
+            "file": info.path,
+            "synthetic": info.synthetic,
+            "width_px": info.width,
+            "height_px": info.height,
+            "frames": int(track.times.size),
+            "codec": info.codec,
+            "metadata": info.metadata,
+        },
+        "ball_radius_m": ball_radius,
+        "platter_radius_m": platter_radius,
+        "omega_rad_s": abs(cal.omega),
+        "omega_stderr_rad_s": cal.omega_stderr,
+        "rpm": abs(cal.omega) * 60 / (2 * math.pi),
+        "rpm_stderr": cal.omega_stderr * 60 / (2 * math.pi),
+        "clockwise_from_above": track.mirrored,
+        "y_mirrored": track.mirrored,
+        "camera": {k: cal.derived[k] for k in cal.derived},
+        "camera_stderr": {k: cal.stderr[k] for k in cal.stderr},
+        "homography_plane_to_image": camera.homography(cal.pose).tolist(),
+        "homography_ball_plane_to_image": camera.homography(cal.pose, ball_radius).tolist(),
+        "mark_radius_m": cal.mark_radius,
+        "rim_rms_px": cal.rim_rms_px,
+        "mark_rms_px": cal.mark_rms_px,
+        "mark_residual_lag1": cal.mark_lag1,
+        "rim_ellipse_px": {
+            "centre": list(track.rim.centre),
+            "semi_axes": [track.rim.a, track.rim.b],
+            "angle_rad": track.rim.angle,
+        },
+        "frame_times_s": [float(v) for v in track.times],
+        "lost_frames": track.lost,
+        "units": {
+            "m_per_px": "metres of the platter per pixel at the axis's image",
+            "tilt_deg": "angle of the optical axis from the vertical",
+            "axis_u_px, axis_v_px": "image of the rotation axis (u right, v down)",
+            "homography": (
+                "(u, v, 1) ~ H (x, y, 1): plane z = 0, and the plane of the ball's centre z = R"
+            ),
+            "stderr": "from the least-squares fit of the camera to the rim and the mark",
+        },
+    }
+
+
+def video_summary(track: Track, given_omega: bool) -> dict[str, Any]:
+    """What ``turntable fit VIDEO`` reports of the tracking, under "video"."""
+    cal = track.calibration
+    return {
+        "file": track.info.path,
+        "synthetic": track.info.synthetic,
+        "frames": int(track.times.size),
+        "lost_frames": track.lost,
+        "omega_rad_s": abs(cal.omega),
+        "omega_stderr_rad_s": cal.omega_stderr,
+        "omega_used": "given" if given_omega else "measured in the video",
+        "axis": "measured in the video: the origin of the film",
+        "clockwise_from_above": track.mirrored,
+        "camera": dict(cal.derived),
+        "camera_stderr": dict(cal.stderr),
+    }

@@ -1,0 +1,199 @@
+"""``turntable track`` and ``turntable fit VIDEO`` on SYNTHETIC videos rendered from the exact
+solutions (small: 480x270, about a second), and on videos that cannot be tracked."""
+
+from __future__ import annotations
+
+import json
+import math
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+pytest.importorskip("av")
+pytest.importorskip("cv2")
+
+from turntable import cli, film
+from turntable.video import camera
+from turntable.video.render import Scene, render_video
+from turntable.video.track import track_video
+
+RADIUS, PLATTER = 0.008, 0.15
+SETUP = film.Setup(RADIUS, film.rpm_to_omega(100.0 / 3.0), 0.4, (0.0, 0.0))
+#: A slipping ball 7 radii from the axis, launched sideways.
+STATE0 = [7.0, 0.0, 0.0, 0.4, 0.0, 0.0]
+SCENE = Scene(tilt_deg=25.0, roll_deg=4.0, size=(480, 270), fps=40.0, duration=1.5)
+
+
+def run_here(capsys: pytest.CaptureFixture[str], *args: str) -> subprocess.CompletedProcess:
+    """``turntable ARGS`` in this process, as exit status, stdout, stderr."""
+    try:
+        code = cli.main(list(args))
+    except SystemExit as exc:
+        code = exc.code
+    out, err = capsys.readouterr()
+    return subprocess.CompletedProcess(args, code, out, err)
+
+
+@pytest.fixture(scope="module")
+def rendered(tmp_path_factory: pytest.TempPathFactory):
+    """A video of the slipping ball with frames 20-22 drawn without the ball."""
+    path = tmp_path_factory.mktemp("video") / "ball_SYNTHETIC.mp4"
+    scene = SCENE._replace(hidden=(20, 21, 22))
+    truth = render_video(path, "slipping", 2.0, STATE0, SETUP, scene, seed=3)
+    track, warnings = track_video(path, RADIUS, PLATTER)
+    return path, truth, track, warnings
+
+
+def test_positions_within_a_twentieth_of_the_ball_radius(rendered) -> None:
+    _, truth, track, _ = rendered
+    keep = np.setdiff1d(np.arange(truth.film.t.size), track.lost)
+    err = np.hypot(track.film.x - truth.film.x[keep], track.film.y - truth.film.y[keep])
+    assert np.sqrt(np.mean(err**2)) < 0.05 * RADIUS
+    # the ball's image mapped to the platter's plane instead of the plane of its centre
+    # misses by R tan(tilt) and more: the height is what makes the positions right
+    flat = camera.back_project(track.calibration.pose, track.image[keep], height=0.0)
+    assert np.median(np.hypot(*(flat - np.c_[truth.film.x, truth.film.y][keep]).T)) > 0.3 * RADIUS
+
+
+def test_omega_and_tilt_within_their_errors(rendered) -> None:
+    _, truth, track, _ = rendered
+    cal = track.calibration
+    assert abs(cal.omega - truth.omega) < 4 * cal.omega_stderr
+    assert cal.omega_stderr < 1e-3 * truth.omega
+    assert abs(cal.derived["tilt_deg"] - SCENE.tilt_deg) < max(4 * cal.stderr["tilt_deg"], 0.2)
+    axis = camera.project(truth.pose, np.zeros(2))
+    assert np.hypot(cal.derived["axis_u_px"] - axis[0], cal.derived["axis_v_px"] - axis[1]) < 0.5
+    assert not track.mirrored
+
+
+def test_lost_frames_are_gaps_named_in_a_warning(rendered) -> None:
+    _, truth, track, warnings = rendered
+    assert track.lost == [20, 21, 22]
+    assert track.film.t.size == truth.film.t.size - 3
+    assert 20 / SCENE.fps not in track.film.t
+    assert any("20-22" in w for w in warnings)
+
+
+def test_track_writes_the_film_and_its_calibration(rendered, tmp_path, capsys) -> None:
+    path, truth, _, _ = rendered
+    out = tmp_path / "film.csv"
+    res = run_here(
+        capsys,
+        "track",
+        str(path),
+        "--ball-radius",
+        "0.008",
+        "--platter-radius",
+        "0.15",
+        "-o",
+        str(out),
+        "--rpm",
+        "33.3333333",
+    )
+    assert res.returncode == 0, res.stderr
+    assert "20-22" in res.stderr
+    data = film.read_film(out)
+    assert data.synthetic
+    assert data.t.size == truth.film.t.size - 3
+    cal = json.loads(out.with_suffix(".json").read_text())
+    assert cal["video"]["synthetic"]
+    assert cal["lost_frames"] == [20, 21, 22]
+    assert abs(cal["omega_rad_s"] - truth.omega) < 4 * cal["omega_stderr_rad_s"]
+    assert len(cal["frame_times_s"]) == truth.film.t.size
+
+
+def test_fit_video_takes_omega_from_it(rendered, capsys) -> None:
+    path, truth, _, _ = rendered
+    res = run_here(capsys, "fit", str(path), "--radius", "0.008", "--platter-radius", "0.15")
+    assert res.returncode == 0, res.stderr
+    out = json.loads(res.stdout)
+    assert out["data"]["synthetic"]
+    assert out["setup"]["omega_rad_s"] == out["video"]["omega_rad_s"]
+    assert abs(out["setup"]["omega_rad_s"] - truth.omega) < 1e-3 * truth.omega
+    assert out["video"]["lost_frames"] == [20, 21, 22]
+
+
+# --------------------------------------------------------------------------- bad input
+def _noise_video(path: Path, frames: int = 3) -> None:
+    import av
+
+    rng = np.random.default_rng(0)
+    with av.open(str(path), "w") as out:
+        stream = out.add_stream("libx264", rate=30)
+        stream.width, stream.height, stream.pix_fmt = 160, 96, "yuv420p"
+        for _ in range(frames):
+            img = rng.integers(0, 255, (96, 160), dtype=np.uint8)
+            out.mux(stream.encode(av.VideoFrame.from_ndarray(img, format="gray")))
+        out.mux(stream.encode(None))
+
+
+def _leaving(path: Path) -> None:
+    """A nearly free ball running straight at the rim (it stops short of it by R / 5)."""
+    v = 0.05 / (RADIUS * SETUP.omega)
+    t_end = (PLATTER - 1.2 * RADIUS - 0.09) / 0.05
+    scene = SCENE._replace(duration=t_end, fps=20.0)
+    render_video(path, "slipping", 1e-4, [0.09 / RADIUS, 0.0, v, 0.0, 0.0, 0.0], SETUP, scene)
+
+
+@pytest.mark.parametrize(
+    ("make", "message"),
+    [
+        pytest.param(lambda p: p.write_bytes(b""), "not a video", id="empty-file"),
+        pytest.param(lambda p: p.write_text("t,x,y\n"), "not a video", id="text-file"),
+        pytest.param(_noise_video, "no platter found", id="no-platter"),
+        pytest.param(
+            lambda p: render_video(
+                p,
+                "slipping",
+                2.0,
+                STATE0,
+                SETUP,
+                SCENE._replace(duration=0.3, hidden=tuple(range(13))),
+            ),
+            "no ball found",
+            id="no-ball",
+        ),
+        pytest.param(_leaving, "reaches the platter's rim", id="ball-leaving-platter"),
+    ],
+)
+def test_bad_video_one_line_exit_2_nothing_written(make, message, tmp_path, capsys) -> None:
+    video = tmp_path / "bad_SYNTHETIC.mp4"
+    make(video)
+    out = tmp_path / "film.csv"
+    res = run_here(
+        capsys,
+        "track",
+        str(video),
+        "--ball-radius",
+        "0.008",
+        "--platter-radius",
+        "0.15",
+        "-o",
+        str(out),
+    )
+    assert res.returncode == 2
+    assert message in res.stderr
+    assert len(res.stderr.strip().splitlines()) == 1
+    assert sorted(p.name for p in tmp_path.iterdir()) == [video.name]
+
+
+def test_missing_platter_radius_is_one_line(capsys, tmp_path) -> None:
+    res = run_here(capsys, "fit", str(tmp_path / "a.mp4"), "--radius", "0.008")
+    assert res.returncode == 2
+    assert "--platter-radius" in res.stderr
+
+
+def test_render_refuses_a_name_without_synthetic(tmp_path) -> None:
+    with pytest.raises(ValueError, match="SYNTHETIC"):
+        render_video(tmp_path / "ball.mp4", "slipping", 2.0, STATE0, SETUP, SCENE)
+
+
+def test_camera_round_trip() -> None:
+    pose = camera.Pose(700.0, math.radians(30), 0.1, (0.01, -0.02), 0.6, (640, 360))
+    xy = np.array([[0.05, 0.02], [-0.1, 0.07]])
+    for h in (0.0, 0.01):
+        np.testing.assert_allclose(
+            camera.back_project(pose, camera.project(pose, xy, h), h), xy, atol=1e-12
+        )

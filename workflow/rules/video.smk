@@ -1,0 +1,64 @@
+# From video to friction: a SYNTHETIC video of the ball of section film (section fig10_video),
+# tracked by `turntable track` and fitted by `turntable fit VIDEO`.
+VIDEO = "results/video/ball_SYNTHETIC.mp4"
+VIDEO_TRUTH = "results/video/truth_SYNTHETIC.csv"
+VIDEO_TRACK = "results/video/track_SYNTHETIC.csv"
+VIDEO_FIT = "results/video/fit_SYNTHETIC.json"
+
+
+rule render_video:
+    input:
+        code=PACKAGE,
+    output:
+        video=ensure(VIDEO, non_empty=True),
+        truth=ensure(VIDEO_TRUTH, non_empty=True),
+    log:
+        "logs/render_video.log",
+    benchmark:
+        "logs/benchmarks/render_video.tsv"
+    conda:
+        "../envs/turntable.yaml"
+    params:
+        film=config["film"],
+        video=config["fig10_video"],
+    script:
+        "../scripts/render_video.py"
+
+
+rule track_video:
+    input:
+        video=VIDEO,
+        code=PACKAGE,
+    output:
+        csv=ensure(VIDEO_TRACK, non_empty=True),
+        json=ensure(VIDEO_TRACK.replace(".csv", ".json"), non_empty=True),
+    log:
+        "logs/track_video.log",
+    conda:
+        "../envs/turntable.yaml"
+    params:
+        radius=config["film"]["radius_m"],
+        platter=config["fig10_video"]["platter_radius_m"],
+        rpm=config["film"]["rpm"],
+    shell:
+        "turntable track {input.video:q} --ball-radius {params.radius} "
+        "--platter-radius {params.platter} --rpm {params.rpm} -o {output.csv:q} > {log:q} 2>&1"
+
+
+rule fit_video:
+    input:
+        video=VIDEO,
+        code=PACKAGE,
+    output:
+        ensure(VIDEO_FIT, non_empty=True),
+    log:
+        "logs/fit_video.log",
+    conda:
+        "../envs/turntable.yaml"
+    params:
+        radius=config["film"]["radius_m"],
+        platter=config["fig10_video"]["platter_radius_m"],
+        k=config["film"]["k"],
+    shell:
+        "turntable fit {input.video:q} --radius {params.radius} --platter-radius "
+        "{params.platter} --k {params.k} > {output:q} 2> {log:q}"

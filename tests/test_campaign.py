@@ -142,8 +142,13 @@ def test_the_campaign_in_the_build(clean_build):
         rows = list(csv.DictReader(f))
     assert rows
     assert all(r["film"].startswith("SYNTHETIC") for r in rows)
+    assert {Path(r["file"]).suffix for r in rows} == {".csv", ".mp4"}
     for r in rows:
         assert r["selected"] == r["true_model"], r
-        assert abs(float(r["value"]) - float(r["true_value"])) < 4 * float(r["stderr"]), r
+        error = abs(float(r["value"]) - float(r["true_value"]))
+        if r["file"].endswith(".csv"):
+            assert error < 4 * float(r["stderr"]), r
+        else:  # a tracked video: errors correlated from frame to frame, a standard error too small
+            assert error < 0.05 * float(r["true_value"]), r
     log = (clean_build / "logs/campaign/summary.log").read_text()
     assert log.startswith(f"{len(rows)} films fitted, 0 failed\n")

@@ -174,7 +174,10 @@ EDITS = {
         {"figure_gallery", "all"},
     ),
     "a parameter": (_change_a_parameter, {"fig3_modal_terms"} | DOWNSTREAM_OF_FIGURES),
-    "a label of the campaign": (lambda c: _edit_campaign(c, ",felt,", ",wool,"), {"campaign", "all"}),
+    "a label of the campaign": (
+        lambda c: _edit_campaign(c, ",felt,", ",wool,"),
+        {"campaign", "all"},
+    ),
     "the rate of one film": (
         lambda c: _edit_campaign(c, ",45.0,", ",46.0,"),
         {"campaign_film", "campaign_fit", "campaign", "all"},

@@ -183,27 +183,49 @@ def write_summary(path: str | os.PathLike[str], rows: list[dict[str, Any]]) -> N
         writer.writerows(rows)
 
 
-def simulation(film: Film, section: dict[str, Any]) -> dict[str, Any]:
+def simulation(
+    film: Film, section: dict[str, Any], video: dict[str, Any] | None = None
+) -> dict[str, Any]:
     """What `simulate` needs of a synthetic `film`: section ``film`` of the configuration
-    (camera and start) with the row's ball and turntable, and the row's truth."""
+    (camera and start) with the row's ball and turntable, and the row's truth; for a video,
+    also the scene of section `video` (``fig10_video``) with the row's platter."""
     ball = {"radius_m": film.radius_m, "k": film.k, "rpm": film.rpm}
     labels = film.labels
-    return {
+    spec = {
         "film": dict(section) | ball,
         "model": labels["true_model"],
         "value": float(labels["true_value"]),
         "seed": int(labels["seed"]),
     }
+    if film.platter_radius_m is not None and video is not None:
+        spec["scene"] = {
+            "platter_radius": film.platter_radius_m,
+            "tilt_deg": video["tilt_deg"],
+            "roll_deg": video["roll_deg"],
+            "size": list(video["size"]),
+            "fps": video["fps"],
+            "duration": video["duration_s"],
+            "noise": video["noise"],
+        }
+    return spec
 
 
 def simulate(spec: dict[str, Any], path: str | os.PathLike[str]) -> None:
-    """Write the SYNTHETIC film of `spec` (`simulation`) to `path`."""
+    """Write the SYNTHETIC film of `spec` (`simulation`) to `path`: a tracked film (CSV),
+    or a video (`turntable.video.render`) when `spec` has a scene."""
     from turntable import film, fit, solution
 
     rig = film.rig_from_config(spec["film"])
     z0 = rig.state0
     if spec["model"] == "rolling_resistance":
         z0 = solution.no_slip_state(z0, rig.setup.k)
+    if "scene" in spec:
+        from turntable.video.render import Scene, render_video
+
+        scene = Scene(**(spec["scene"] | {"size": tuple(spec["scene"]["size"])}))
+        setup = rig.setup._replace(axis=(0.0, 0.0))
+        render_video(path, spec["model"], spec["value"], z0, setup, scene, spec["seed"])
+        return
     args = (spec["model"], spec["value"], z0, rig.setup, rig.camera, spec["seed"])
     film.write_film(path, fit.simulate_film(*args), fit.synthetic_header(*args))
 

@@ -87,7 +87,7 @@ def validate(config: dict[str, Any], schema: str | Path) -> list[str]:
     ["fig2_spectrum.n_points: 400.0 is not of type 'integer'"]
     >>> config = {}
     >>> validate(config, schema), config["fig3_modal_terms"]["t_span"]
-    ([], [0.0, 8.0])
+    ([], [0.0, 40.0])
     """
     lines = []
     for error in sorted(

@@ -3,6 +3,7 @@
 # results/campaign/summary.csv and a figure. The table's SYNTHETIC films are written here,
 # one job each.
 import json
+import re
 from dataclasses import asdict
 
 from turntable.campaign import CampaignError, read_table, simulation
@@ -17,7 +18,7 @@ if CAMPAIGN and config["campaign"]["group_by"] not in CAMPAIGN[0].labels:
         f"{config['campaign']['table']} (labels: {', '.join(CAMPAIGN[0].labels)})"
     )
 CAMPAIGN_FILMS = {film.name: film for film in CAMPAIGN}
-CAMPAIGN_SYNTHETIC = {f.name: f for f in CAMPAIGN if f.synthetic}
+CAMPAIGN_SYNTHETIC = {Path(f.path).name: f for f in CAMPAIGN if f.synthetic}
 CAMPAIGN_OUTPUTS = expand("results/campaign/summary.{ext}", ext=["csv", "pdf", "png"])
 
 
@@ -25,16 +26,18 @@ rule campaign_film:
     input:
         code=PACKAGE,
     output:
-        ensure("results/campaign/films/{film}.csv", non_empty=True),
+        ensure("results/campaign/films/{film}", non_empty=True),
     log:
         "logs/campaign/{film}.simulate.log",
     wildcard_constraints:
-        film="|".join(CAMPAIGN_SYNTHETIC) or "^$",
+        film="|".join(map(re.escape, CAMPAIGN_SYNTHETIC)) or "^$",
     conda:
         "../envs/turntable.yaml"
     params:
         spec=lambda w: json.dumps(
-            simulation(CAMPAIGN_SYNTHETIC[w.film], config["film"])
+            simulation(
+                CAMPAIGN_SYNTHETIC[w.film], config["film"], config["fig10_video"]
+            )
         ),
     shell:
         "python -m turntable.campaign simulate {params.spec:q} {output:q} 2> {log:q}"

@@ -76,5 +76,5 @@ if value is not None:
 ax.axhline(true_value, color="k", lw=0.8, label="truth")
 symbol = {"slipping": r"$\mu_0$", "rolling_resistance": r"$\delta$"}[true_model]
 ax.set(xticks=[], xlim=(-1, 1), ylabel=symbol, title=f"selected: {res['selected']}")
-ax.legend(fontsize=6, loc="lower center")
+ax.legend(fontsize=6, loc="upper center", bbox_to_anchor=(0.5, -0.12), frameon=False)
 save(fig, snakemake)

@@ -27,7 +27,7 @@ def build(tmp_path_factory: pytest.TempPathFactory, worker_id: str) -> Path:
     return workdir
 
 
-@pytest.mark.parametrize("name", ["fig4_trajectories.png", "animation.gif"])
+@pytest.mark.parametrize("name", ["fig4_trajectories.png", "animation.gif", "fig10_video.png"])
 def test_readme_pictures_are_the_pipelines(build: Path, name: str) -> None:
     """docs/ holds the bytes of a fresh build (else: make readme-figure)."""
     built = (build / "figures" / name).read_bytes()

@@ -90,18 +90,21 @@ rule animation:
         "../scripts/as_notebook.py"
 
 
-# The figure and the animation of README.md (docs/, committed): `make readme-figure`.
+# The pictures of README.md and of the documentation (docs/, committed): `make readme-figure`.
 rule readme_figure:
     input:
         png="figures/fig4_trajectories.png",
         gif="figures/animation.gif",
+        video="figures/fig10_video.png",
     output:
         png="docs/fig4_trajectories.png",
         gif="docs/animation.gif",
+        video="docs/fig10_video.png",
     log:
         "logs/readme_figure.log",
     localrule: True
     conda:
         "../envs/turntable.yaml"
     shell:
-        "(cp -v {input.png:q} {output.png:q} && cp -v {input.gif:q} {output.gif:q}) > {log:q}"
+        "(cp -v {input.png:q} {output.png:q} && cp -v {input.gif:q} {output.gif:q} "
+        "&& cp -v {input.video:q} {output.video:q}) > {log:q}"

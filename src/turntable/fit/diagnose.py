@@ -161,6 +161,30 @@ def undescribed(result: FilmFit) -> str:
     follows, and a coefficient at the end of its search range is no measurement (a ball
     moving in a straight line is the slipping model's mu0 -> 0, but not a friction).  The
     AICc difference then weighs two wrong models, and says nothing about the friction.
+
+    Parameters
+    ----------
+    result : FilmFit
+        The fit of a film (`fit_film`).
+
+    Returns
+    -------
+    str
+        One sentence: what is wrong and what to check; "" if the selected model fits.
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=4.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> film = fit.simulate_film("slipping", 3.0, z0, setup, camera, seed=1)
+    >>> fit.undescribed(fit.fit_film(film, setup))
+    ''
+    >>> wrong = setup._replace(omega=3.5 * 1.05)  # a rate 5 % off
+    >>> fit.undescribed(fit.fit_film(film, wrong))[:36]
+    'neither model describes the film: th'
     """
     if result.selected is None:
         return ""

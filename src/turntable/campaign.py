@@ -10,7 +10,8 @@ same.
 
 ``python -m turntable.campaign fit ARGS_JSON OUT.json`` fits one film (`Film.fit_args`) and
 writes the result of ``turntable fit``, or the one line that refused the film;
-``python -m turntable.campaign simulate SPEC_JSON OUT.csv`` writes a synthetic film.
+``python -m turntable.campaign simulate SPEC_JSON OUT [TRUTH.csv]`` writes a synthetic film
+or video.
 """
 
 from __future__ import annotations
@@ -87,12 +88,13 @@ def _check_synthetic(film: Film) -> None:
 
 
 def read_table(
-    path: str | os.PathLike[str], results: str = "results"
+    path: str | os.PathLike[str], results: str = "results", group_by: str | None = None
 ) -> tuple[list[Film], list[dict[str, Any]]]:
     """The films of the table at `path`, and its bad rows.
 
     A row is bad if a number is missing or not positive, its file is not found (and is not
-    a synthetic film, under `results`), or its name is that of an earlier row.
+    a synthetic film, under `results`), or its name is that of an earlier row. A table
+    without the columns `COLUMNS` and `group_by` is refused (`CampaignError`).
     Each bad row is ``{"row": n, "file": ..., "error": one line}``; ``n`` counts the header
     as row 1, as a spreadsheet does.
     """
@@ -103,6 +105,7 @@ def read_table(
         raise CampaignError(f"campaign table {table}: {exc.strerror}") from None
     reader = csv.DictReader(io.StringIO(text))
     missing = [c for c in COLUMNS if c not in (reader.fieldnames or [])]
+    missing += [group_by] if group_by and group_by not in (reader.fieldnames or []) else []
     if missing:
         raise CampaignError(f"campaign table {table}: no column {', '.join(missing)}")
     films: list[Film] = []
@@ -210,24 +213,32 @@ def simulation(
     return spec
 
 
-def simulate(spec: dict[str, Any], path: str | os.PathLike[str]) -> None:
+def simulate(
+    spec: dict[str, Any], path: str | os.PathLike[str], truth: str | os.PathLike[str] = ""
+) -> None:
     """Write the SYNTHETIC film of `spec` (`simulation`) to `path`: a tracked film (CSV),
-    or a video (`turntable.video.render`) when `spec` has a scene."""
+    or a video (`turntable.video.render`) when `spec` has a scene, with the true positions
+    of its frames at `truth` if given."""
     from turntable import film, fit, solution
 
     rig = film.rig_from_config(spec["film"])
     z0 = rig.state0
     if spec["model"] == "rolling_resistance":
         z0 = solution.no_slip_state(z0, rig.setup.k)
-    if "scene" in spec:
-        from turntable.video.render import Scene, render_video
-
-        scene = Scene(**(spec["scene"] | {"size": tuple(spec["scene"]["size"])}))
-        setup = rig.setup._replace(axis=(0.0, 0.0))
-        render_video(path, spec["model"], spec["value"], z0, setup, scene, spec["seed"])
+    Path(path).parent.mkdir(parents=True, exist_ok=True)
+    if "scene" not in spec:
+        args = (spec["model"], spec["value"], z0, rig.setup, rig.camera, spec["seed"])
+        film.write_film(path, fit.simulate_film(*args), fit.synthetic_header(*args))
         return
-    args = (spec["model"], spec["value"], z0, rig.setup, rig.camera, spec["seed"])
-    film.write_film(path, fit.simulate_film(*args), fit.synthetic_header(*args))
+    from turntable.video.render import Scene, render_video
+
+    scene = Scene(**(spec["scene"] | {"size": tuple(spec["scene"]["size"])}))
+    setup = rig.setup._replace(axis=(0.0, 0.0))
+    rendered = render_video(path, spec["model"], spec["value"], z0, setup, scene, spec["seed"])
+    if truth:
+        head = "SYNTHETIC DATA: the true positions of the ball of the rendered video"
+        truth_of = f"truth: model = {spec['model']}, coefficient = {spec['value']!r}"
+        film.write_film(truth, rendered.film, [head, truth_of])
 
 
 def _write_json(record: dict[str, Any], out: str) -> None:
@@ -237,12 +248,11 @@ def _write_json(record: dict[str, Any], out: str) -> None:
 
 
 def main(argv: list[str] | None = None) -> int:
-    command, spec, out = sys.argv[1:] if argv is None else argv
+    command, spec, *out = sys.argv[1:] if argv is None else argv
     if command == "simulate":
-        Path(out).parent.mkdir(parents=True, exist_ok=True)
-        simulate(json.loads(spec), out)
+        simulate(json.loads(spec), *out)
     else:
-        _write_json(fit_film(json.loads(spec)), out)
+        _write_json(fit_film(json.loads(spec)), *out)
     return 0
 
 

@@ -9,14 +9,11 @@ from dataclasses import asdict
 from turntable.campaign import CampaignError, read_table, simulation
 
 try:
-    CAMPAIGN, CAMPAIGN_BAD_ROWS = read_table(config["campaign"]["table"])
-except CampaignError as exc:
-    raise WorkflowError(str(exc)) from None
-if CAMPAIGN and config["campaign"]["group_by"] not in CAMPAIGN[0].labels:
-    raise WorkflowError(
-        f"campaign.group_by: {config['campaign']['group_by']!r} is not a label column of "
-        f"{config['campaign']['table']} (labels: {', '.join(CAMPAIGN[0].labels)})"
+    CAMPAIGN, CAMPAIGN_BAD_ROWS = read_table(
+        config["campaign"]["table"], group_by=config["campaign"]["group_by"]
     )
+except CampaignError as exc:
+    raise WorkflowError(f"campaign: {exc}") from None
 CAMPAIGN_FILMS = {film.name: film for film in CAMPAIGN}
 CAMPAIGN_SYNTHETIC = {Path(f.path).name: f for f in CAMPAIGN if f.synthetic}
 CAMPAIGN_OUTPUTS = expand("results/campaign/summary.{ext}", ext=["csv", "pdf", "png"])

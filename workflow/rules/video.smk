@@ -1,9 +1,24 @@
 # From video to friction: a SYNTHETIC video of the ball of section film (section fig10_video),
 # tracked by `turntable track` and fitted by `turntable fit VIDEO`.
+import json
+
+from turntable.campaign import Film, simulation
+
 VIDEO = "results/video/ball_SYNTHETIC.mp4"
 VIDEO_TRUTH = "results/video/truth_SYNTHETIC.csv"
 VIDEO_TRACK = "results/video/track_SYNTHETIC.csv"
 VIDEO_FIT = "results/video/fit_SYNTHETIC.json"
+_v = config["fig10_video"]
+VIDEO_BALL = Film(
+    **{"row": 0, "name": "ball_SYNTHETIC", "path": VIDEO, "synthetic": True},
+    **{k: config["film"][k] for k in ("radius_m", "k", "rpm")},
+    platter_radius_m=_v["platter_radius_m"],
+    labels={
+        "true_model": _v["model"],
+        "true_value": str(_v["coefficient"]),
+        "seed": str(_v["seed"]),
+    },
+)
 
 
 rule render_video:
@@ -19,10 +34,10 @@ rule render_video:
     conda:
         "../envs/turntable.yaml"
     params:
-        film=config["film"],
-        video=config["fig10_video"],
-    script:
-        "../scripts/render_video.py"
+        spec=json.dumps(simulation(VIDEO_BALL, config["film"], config["fig10_video"])),
+    shell:
+        "python -m turntable.campaign simulate {params.spec:q} {output.video:q} "
+        "{output.truth:q} 2> {log:q}"
 
 
 rule track_video:

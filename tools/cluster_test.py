@@ -21,6 +21,7 @@ import filecmp
 import os
 import re
 import shutil
+import signal
 import socket
 import subprocess
 import sys
@@ -214,6 +215,7 @@ def cancel_one_job(cluster: Path) -> None:
 
 
 def main() -> None:
+    signal.signal(signal.SIGTERM, lambda *_: fail("terminated"))  # and still clean up
     parser = argparse.ArgumentParser(description=__doc__.partition("\n")[0])
     parser.add_argument(
         "--keep", type=Path, help="work in DIR and keep it (default: a temporary one)"

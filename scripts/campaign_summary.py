@@ -59,6 +59,8 @@ for ax, name in zip(axes, names.values(), strict=True):
 axes[0].set_yticks(range(len(ticks)), ticks, fontsize=6)
 for i, group in enumerate(groups):
     axes[1].plot([], [], "o", color=f"C{i}", label=f"{p.group_by} = {group}")
+if not all(r["decisive"] for r in fitted):
+    axes[1].plot([], [], "o", color="grey", mfc="white", label="selection not decisive")
 if any(r.get("true_value") for r in fitted):
     axes[1].plot([], [], "k+", ms=9, label="true value (SYNTHETIC)")
 axes[1].legend(fontsize=6, loc="best")

@@ -10,14 +10,17 @@ VIDEO_TRACK = "results/video/track_SYNTHETIC.csv"
 VIDEO_FIT = "results/video/fit_SYNTHETIC.json"
 _v = config["fig10_video"]
 VIDEO_BALL = Film(
-    **{"row": 0, "name": "ball_SYNTHETIC", "path": VIDEO, "synthetic": True},
-    **{k: config["film"][k] for k in ("radius_m", "k", "rpm")},
+    row=0,
+    name="ball_SYNTHETIC",
+    path=VIDEO,
+    **{key: config["film"][key] for key in ("radius_m", "k", "rpm")},
     platter_radius_m=_v["platter_radius_m"],
     labels={
         "true_model": _v["model"],
         "true_value": str(_v["coefficient"]),
         "seed": str(_v["seed"]),
     },
+    synthetic=True,
 )
 
 

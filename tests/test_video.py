@@ -115,6 +115,22 @@ def test_fit_video_takes_omega_from_it(rendered, capsys) -> None:
     assert out["video"]["lost_frames"] == [20, 21, 22]
 
 
+def test_clockwise_platter_at_a_variable_frame_rate(tmp_path) -> None:
+    """A phone's video: frame times off the grid by up to 0.4 intervals, platter clockwise."""
+    path = tmp_path / "phone_SYNTHETIC.mp4"
+    scene = SCENE._replace(clockwise=True, jitter=0.8, duration=1.0)
+    truth = render_video(path, "slipping", 2.0, STATE0, SETUP, scene, seed=5)
+    track, _ = track_video(path, RADIUS, PLATTER)
+    assert track.mirrored
+    assert abs(abs(track.calibration.omega) - SETUP.omega) < 4 * track.calibration.omega_stderr
+    steps = np.diff(truth.film.t) * SCENE.fps
+    assert steps.min() < 0.75  # the frame rate does vary
+    assert steps.max() > 1.25
+    np.testing.assert_allclose(track.film.t, truth.film.t - truth.film.t[0], atol=1e-5)
+    err = np.hypot(track.film.x - truth.film.x, track.film.y - truth.film.y)
+    assert np.sqrt(np.mean(err**2)) < 0.05 * RADIUS
+
+
 # --------------------------------------------------------------------------- bad input
 def _noise_video(path: Path, frames: int = 3) -> None:
     import av

@@ -60,6 +60,12 @@ class Scene(NamedTuple):
         Quality of the H.264 encoding (libx264's constant rate factor; 0 is lossless).
     hidden : tuple of int
         Frames drawn without the ball (a hand over it, say): lost frames for the tracker.
+    clockwise : bool
+        The platter turns clockwise as the camera sees it: the scene is the mirror image
+        of the counterclockwise one.
+    jitter : float
+        Variable frame rate: each frame's time is moved by up to +- jitter / 2 frame
+        intervals (uniformly at random, below 1), as phones record.
     """
 
     platter_radius: float = 0.15
@@ -74,6 +80,8 @@ class Scene(NamedTuple):
     mark_at: float = 0.88
     crf: int = 18
     hidden: tuple[int, ...] = ()
+    clockwise: bool = False
+    jitter: float = 0.0
 
 
 class Rendered(NamedTuple):
@@ -154,7 +162,7 @@ class _Renderer:
         exposure = scene.shutter / scene.fps
         self.exposure = exposure
         self.tex = _texture(
-            self.rng, self.n_r, self.n_phi, omega * exposure / (2 * math.pi) * self.n_phi
+            self.rng, self.n_r, self.n_phi, abs(omega) * exposure / (2 * math.pi) * self.n_phi
         )
         table = TABLE + 4.0 * self.rng.standard_normal((height, width)) + 15.0 * (v / height - 0.5)
         self.base = (table * (1.0 - self.cover)).astype(np.float32)
@@ -183,7 +191,7 @@ class _Renderer:
         rho, at = sc.mark_radius * self.radius, sc.mark_at * sc.platter_radius
         marks = at * np.column_stack([np.cos(self.omega * times), np.sin(self.omega * times)])
         centre = camera.project(pose, marks.mean(axis=0))
-        half = (rho + at * self.omega * self.exposure) / self.foot[
+        half = (rho + at * abs(self.omega) * self.exposure) / self.foot[
             int(np.clip(centre[1], 0, sc.size[1] - 1)), int(np.clip(centre[0], 0, sc.size[0] - 1))
         ] + 3
         box = self._box(centre, half)
@@ -258,12 +266,16 @@ def render_video(
 
     Notes
     -----
-    Frame i, at time t_i = i / fps of the video, shows the scene averaged over the
+    Frame i, at time t_i = i / fps of the video (moved by the jitter, rounded to the
+    container's 1/90000 s), shows the scene averaged over the
     shutter's opening (`BLUR_SAMPLES` instants), the model's times t_i to t_i + e, e =
     shutter / fps; ``state0`` is the state at the first opening, and the true position of
     frame i is the one at its middle, t_i + e / 2, as a tracker sees it.  The ball's image
     is drawn by casting rays at a sphere whose centre is at height R, so that its image is the
-    perspective image of a ball, not of a disc on the platter.
+    perspective image of a ball, not of a disc on the platter.  A clockwise scene draws
+    the ball at (x, -y) and turns the platter the other way; the returned positions stay
+    those of the model, in which the platter turns counterclockwise (as `turntable.video.track`
+    reports a clockwise platter's film).
     """
     import av
 
@@ -278,8 +290,16 @@ def render_video(
     scene = scene or Scene()
     pose = pose or default_pose(scene)
     n = math.floor(scene.duration * scene.fps * (1 + 1e-12)) + 1
+    time_base = Fraction(1, 90000)
     t = np.arange(n) / scene.fps
-    renderer = _Renderer(scene, pose, setup.radius, setup.omega, seed)
+    if not 0.0 <= scene.jitter < 1.0:
+        raise ValueError(f"Scene.jitter must be in [0, 1) frame intervals; got {scene.jitter}")
+    if scene.jitter:
+        shift = np.random.default_rng(seed).uniform(-0.5, 0.5, n) * scene.jitter / scene.fps
+        t = np.maximum(t + shift, 0.0)
+    t = np.round(t * time_base.denominator) / time_base.denominator
+    sign = -1.0 if scene.clockwise else 1.0
+    renderer = _Renderer(scene, pose, setup.radius, sign * setup.omega, seed)
     # model time = video time + half the shutter time: the first opening starts at t = 0
     offsets = renderer.exposure * (np.arange(BLUR_SAMPLES) + 0.5) / BLUR_SAMPLES
     samples = (t[:, None] + offsets[None, :]).ravel()
@@ -291,8 +311,8 @@ def render_video(
             f"the ball leaves the platter ({radius_max:.4g} m from the axis, P - R = "
             f"{scene.platter_radius - setup.radius:.4g} m)"
         )
+    ball[..., 1] *= sign
     tmp = path.with_name(f".{path.name}.partial{path.suffix}")
-    time_base = Fraction(1, 90000)
     try:
         with av.open(str(tmp), "w") as out:
             out.metadata["title"] = f"{SYNTHETIC} turntable video"

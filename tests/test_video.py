@@ -213,3 +213,31 @@ def test_camera_round_trip() -> None:
         np.testing.assert_allclose(
             camera.back_project(pose, camera.project(pose, xy, h), h), xy, atol=1e-12
         )
+
+
+def test_sphere_centre_from_the_centre_of_its_image() -> None:
+    """The image of a ball off the optical axis is an ellipse centred away from the image of
+    its centre; `camera.sphere_centre` maps the ellipse's centre back to the ball's centre."""
+    pose = camera.Pose(900.0, math.radians(30), 0.1, (0.0, 0.0), 0.4, (1280, 720))
+    radius, true = 0.012, np.array([0.12, -0.09])
+    # the rim of the image: rays from the eye tangent to the sphere
+    c = np.r_[true, radius] - camera.centre(pose)
+    d = c / np.linalg.norm(c)
+    e1 = np.cross(d, [0.0, 0.0, 1.0])
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(d, e1)
+    a = math.asin(radius / np.linalg.norm(c))
+    s = np.linspace(0, 2 * math.pi, 64, endpoint=False)[:, None]
+    cam = (math.cos(a) * d + math.sin(a) * (np.cos(s) * e1 + np.sin(s) * e2)) @ camera.rotation(
+        pose
+    ).T
+    u = pose.focal * cam[:, 0] / cam[:, 2] + pose.principal[0]
+    v = pose.focal * cam[:, 1] / cam[:, 2] + pose.principal[1]
+    # the ellipse's centre: a conic A u^2 + B u v + C v^2 + D u + E v = 1 through the rim
+    coef = np.linalg.lstsq(np.c_[u * u, u * v, v * v, u, v], np.ones_like(u), rcond=None)[0]
+    centre = np.linalg.solve([[2 * coef[0], coef[1]], [coef[1], 2 * coef[2]]], -coef[3:])
+    naive = camera.back_project(pose, centre, height=radius)[0]
+    assert np.hypot(*(naive - true)) > 0.003 * radius  # the shift is there
+    np.testing.assert_allclose(
+        camera.sphere_centre(pose, centre, radius)[0], true, atol=1e-6 * radius
+    )

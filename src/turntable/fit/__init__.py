@@ -82,12 +82,14 @@ from turntable.fit.parameters import (
 )
 from turntable.fit.results import (
     DECISIVE,
+    NOISE_FACTOR,
     WHITENESS_Z,
     Z95,
     FilmFit,
     ModelFit,
     aic,
     aicc,
+    frame_noise,
     whiteness,
 )
 from turntable.fit.simulate import (
@@ -113,6 +115,7 @@ __all__ = [
     "MAX_FRAME_STEP",
     "MIN_DOF",
     "MODELS",
+    "NOISE_FACTOR",
     "N_STATE",
     "OMEGA_FACTOR",
     "START_FRAMES",
@@ -134,6 +137,7 @@ __all__ = [
     "fit_model",
     "fitted_coefficient",
     "fitted_positions",
+    "frame_noise",
     "frame_step",
     "indistinguishable_above",
     "measurability",

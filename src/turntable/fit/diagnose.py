@@ -157,10 +157,11 @@ def undescribed(result: FilmFit) -> str:
     """Why the selected model does not describe the film ("" if it does, or none is selected).
 
     A selection rests on the selected model fitting the film to its noise: residuals that
-    are correlated from frame to frame (`whiteness`) leave structure that neither model
-    follows, and a coefficient at the end of its search range is no measurement (a ball
-    moving in a straight line is the slipping model's mu0 -> 0, but not a friction).  The
-    AICc difference then weighs two wrong models, and says nothing about the friction.
+    are correlated from frame to frame (`whiteness`) and far above the film's noise
+    (`ModelFit.describes`) leave structure that neither model follows, and a coefficient
+    at the end of its search range is no measurement (a ball moving in a straight line is
+    the slipping model's mu0 -> 0, but not a friction).  The AICc difference then weighs
+    two wrong models, and says nothing about the friction.
 
     Parameters
     ----------
@@ -191,11 +192,11 @@ def undescribed(result: FilmFit) -> str:
     f = result.fits[result.selected]
     name = COEFFICIENT[result.selected]
     why = []
-    if not f.white:
+    if not f.describes:
         why.append(
-            f"its residuals (rms {f.rms_residual:.3g} m) are correlated from frame to frame "
-            f"(lag-1 autocorrelation {f.autocorrelation:.3g}, {abs(f.whiteness_z):.3g} times "
-            "the spread of white noise)"
+            f"its residuals (rms {f.rms_residual:.3g} m, {f.rms_residual / f.noise:.3g} times "
+            f"the film's noise) are correlated from frame to frame (lag-1 autocorrelation "
+            f"{f.autocorrelation:.3g}, {abs(f.whiteness_z):.3g} times the spread of white noise)"
         )
     if f.bound is not None:
         why.append(f"{name} ran into the {f.bound} end of its search range")
@@ -373,12 +374,20 @@ def problems(
             )
     judged = result.selected or min(result.fits, key=lambda m: result.fits[m].rss)
     f = result.fits[judged]
-    if not f.white:
+    if not f.describes:
         out.append(
             f"neither model fits to the noise level: the residuals of the {judged} fit "
-            f"(rms {f.rms_residual:.3g} m) are correlated from frame to frame (lag-1 "
-            f"autocorrelation {f.autocorrelation:.3g}, {abs(f.whiteness_z):.3g} times its "
-            "spread for white noise); check --omega/--rpm, --k, --axis and the sign of y"
+            f"(rms {f.rms_residual:.3g} m, {f.rms_residual / f.noise:.3g} times the film's "
+            f"noise) are correlated from frame to frame (lag-1 autocorrelation "
+            f"{f.autocorrelation:.3g}, {abs(f.whiteness_z):.3g} times its spread for white "
+            "noise); check --omega/--rpm, --k, --axis and the sign of y"
+        )
+    elif not f.white:
+        out.append(
+            f"the residuals of the {judged} fit (rms {f.rms_residual:.3g} m, "
+            f"{f.rms_residual / f.noise:.3g} times the film's frame-to-frame noise) are "
+            f"correlated from frame to frame (lag-1 autocorrelation {f.autocorrelation:.3g}), "
+            "as a tracker's errors are: the standard errors allow for it (Newey-West)"
         )
     # Omega and the axis are judged on the model the film decisively selects: with no model
     # known, each model's freed values can wander (on a short film the rolling model with

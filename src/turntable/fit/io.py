@@ -19,7 +19,7 @@ from turntable.fit.diagnose import (
     problems,
 )
 from turntable.fit.models import COEFFICIENT, MIN_DOF, _check_model, positions
-from turntable.fit.results import DECISIVE, WHITENESS_Z, FilmFit
+from turntable.fit.results import DECISIVE, NOISE_FACTOR, WHITENESS_Z, FilmFit
 
 
 def result_json(
@@ -148,6 +148,7 @@ def result_json(
                 "residual_lag1_autocorrelation": finite_or_none(f.autocorrelation),
                 "residual_lag1_white_sd": finite_or_none(f.autocorrelation_sd),
                 "residuals_white": f.white,
+                "frame_noise_m": finite_or_none(f.noise),
                 "orbital_turns": finite_or_none(
                     f.orbital_rate * f.omega * (film.t[-1] - film.t[0]) / (2.0 * math.pi)
                 ),
@@ -207,7 +208,10 @@ def result_json(
             "model's axis_m in units of R, velocity in units of R Omega, spin in units of "
             "Omega (the model's omega_rad_s)"
         ),
-        "stderr": "from the Jacobian at the optimum and the residual variance RSS/(N - p)",
+        "stderr": (
+            "from the Jacobian at the optimum and the residual variance RSS/(N - p); where "
+            "the residuals are not white, the Newey-West estimate if larger"
+        ),
         "relative_stderr": "standard error of ln(coefficient), i.e. stderr / coefficient",
         "ci95": "95 % interval exp(ln c -+ 1.96 relative_stderr): use it when relative_stderr "
         "is not small",
@@ -219,6 +223,10 @@ def result_json(
             "of the residuals, pooled over x and y; about 0 +- residual_lag1_white_sd for a "
             f"model that fits to the noise level; residuals_white is false beyond "
             f"{WHITENESS_Z:g} times that spread"
+        ),
+        "frame_noise_m": (
+            "noise per coordinate from the third differences of the positions; correlated "
+            f"residuals up to {NOISE_FACTOR:g} times it are a tracker's, not a misfit"
         ),
         "orbital_turns": "turns of the ball about its spiral centre during the film",
         "consistency": (

@@ -1,9 +1,13 @@
 """The nonlinear least-squares fit of one model (`fit_model`) and of both (`fit_film`).
 
 Standard errors come from the Jacobian J at the optimum and the residual variance
-s^2 = RSS / (N - p) (N = 2n coordinates, p parameters); se(c) = c se(ln c) (delta method),
-and the 95 % interval exp(ln c +- 1.96 se(ln c)), which stays positive and is the honest
-form when se(ln c) is not small.
+s^2 = RSS / (N - p) (N = 2n coordinates, p parameters).  Where the residuals are
+correlated from frame to frame (`turntable.fit.whiteness`; a tracker's errors can be), the
+Newey-West estimate with Andrews' bandwidth (`turntable.fit.parameters`) replaces it when
+larger.  (It is not when the residuals are a model's smooth misfit: the scores then sum to
+zero over the film.)
+se(c) = c se(ln c) (delta method), and the 95 % interval exp(ln c +- 1.96 se(ln c)),
+which stays positive and is the honest form when se(ln c) is not small.
 
 A coefficient that ends at an end of `BOUNDS` is not a measurement: the film is then
 consistent with every larger (or smaller) value, and `fit_model` gives instead a one-sided
@@ -24,8 +28,26 @@ from scipy.optimize import brentq, least_squares
 from turntable import _validate
 from turntable.film import Film, Setup, check_setup
 from turntable.fit.models import BOUNDS, MIN_DOF, MODELS, _solve, min_frames
-from turntable.fit.parameters import _columns, _full_jacobian, _Layout, _layout, _stderr_of, _unpack
-from turntable.fit.results import DECISIVE, FilmFit, ModelFit, aic, aicc, whiteness
+from turntable.fit.parameters import (
+    _columns,
+    _full_jacobian,
+    _hac_stderr_of,
+    _Layout,
+    _layout,
+    _stderr_of,
+    _unpack,
+    bartlett_lags,
+)
+from turntable.fit.results import (
+    DECISIVE,
+    WHITENESS_Z,
+    FilmFit,
+    ModelFit,
+    aic,
+    aicc,
+    frame_noise,
+    whiteness,
+)
 from turntable.fit.start import _rates, start_values
 from turntable.solution import max_time
 
@@ -276,11 +298,18 @@ def fit_model(
     sigma = math.sqrt(rss / (n_obs - p))
     z0, _, _, a = _unpack(lay, theta)
     c = math.exp(g)
+    residuals = -r.reshape(-1, 2)
+    rho, rho_sd = whiteness(residuals)
+    exact = rss <= fitter.rss_floor
+    white = exact or not abs(rho / rho_sd) > WHITENESS_Z
     try:
         others, j_c = _columns(lay, c, s, z0, tau, setup.k)
         jac = setup.radius * _full_jacobian(others, j_c, lay)
         with np.errstate(all="ignore"):
             ses = [_stderr_of(jac, i, sigma) for i in range(p)]
+            if not white:
+                lags = bartlett_lags(rho, tau.size)
+                ses = [max(se, _hac_stderr_of(jac, i, r, lags)) for i, se in enumerate(ses)]
     except (ValueError, np.linalg.LinAlgError):
         ses = [math.nan] * p
     bound = None
@@ -291,8 +320,6 @@ def fit_model(
     limit = _limit(fitter, theta, rss, bound) if bound is not None else math.nan
     omega = setup.omega * math.exp(s)
     axis = tuple(float(v) for v in np.asarray(setup.axis) + setup.radius * a)
-    residuals = -r.reshape(-1, 2)
-    rho, rho_sd = whiteness(residuals)
     rate = float(_rates(model, np.float64(c), setup.k)[0].imag)
     return ModelFit(
         model=model,
@@ -324,7 +351,8 @@ def fit_model(
         autocorrelation=rho,
         autocorrelation_sd=rho_sd,
         orbital_rate=rate,
-        exact=rss <= fitter.rss_floor,
+        exact=exact,
+        noise=frame_noise(fitter.data.reshape(-1, 2)) * setup.radius,
     )
 
 

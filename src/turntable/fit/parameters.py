@@ -3,7 +3,9 @@
 The parameters are the state at the first frame, the logarithm of the coefficient and,
 optionally, s = ln(Omega / Omega_given) and the axis (`turntable.fit`).  Standard errors
 treat the other parameters as nuisance parameters: se(ln c) = s / |(I - P) j_c|, j_c the
-column of ln c and P the projection on the other columns (`_stderr_of`).
+column of ln c and P the projection on the other columns (`_stderr_of`); for residuals
+correlated from frame to frame, the Newey-West estimate from the same projection
+(`_hac_stderr_of`).
 """
 
 from __future__ import annotations
@@ -108,3 +110,32 @@ def _stderr_of(jac: NDArray[np.float64], i: int, sigma: float) -> float:
     coef, *_ = np.linalg.lstsq(rest, j_i, rcond=None)
     norm = float(np.linalg.norm(j_i - rest @ coef))
     return sigma / norm if norm > 0 else math.inf
+
+
+def bartlett_lags(rho: float, n: int) -> int:
+    """Andrews' (1991) bandwidth of the Bartlett kernel for an AR(1) series of n terms
+    with lag-1 autocorrelation rho: 1.1447 (4 rho^2 / (1 - rho^2)^2 n)^(1/3), rounded up."""
+    rho = min(abs(rho), 0.99)
+    return min(math.ceil(1.1447 * (4 * rho**2 / (1 - rho**2) ** 2 * n) ** (1 / 3)), n - 1)
+
+
+def _hac_stderr_of(jac: NDArray[np.float64], i: int, residuals: NDArray, lags: int) -> float:
+    """se of parameter i for noise correlated from frame to frame (Newey-West).
+
+    The estimate of parameter i is q . y, q = (I - P) j_i / |(I - P) j_i|^2; its variance
+    is estimated from the scores g_t = q_t . r_t of the frames (both coordinates) as
+    sum_t g_t^2 + 2 sum_{l <= lags} (1 - l / (lags + 1)) sum_t g_t g_{t+l}, times N / (N - p).
+    """
+    j_i = jac[:, i]
+    rest = np.delete(jac, i, axis=1)
+    coef, *_ = np.linalg.lstsq(rest, j_i, rcond=None)
+    q = j_i - rest @ coef
+    norm2 = float(q @ q)
+    if not norm2 > 0:
+        return math.inf
+    g = (q * residuals).reshape(-1, 2).sum(axis=1) / norm2
+    var = float(g @ g)
+    for lag in range(1, lags + 1):
+        var += 2.0 * (1.0 - lag / (lags + 1)) * float(g[lag:] @ g[:-lag])
+    n_obs, p = jac.shape
+    return math.sqrt(max(var, 0.0) * n_obs / (n_obs - p))

@@ -25,6 +25,10 @@ DECISIVE = 10.0
 #: Residuals count as not white when their lag-1 autocorrelation exceeds this many times
 #: its spread 1 / sqrt(pairs) for white noise (false alarm about 3e-5 for white noise).
 WHITENESS_Z = 4.0
+#: Correlated residuals whose rms is at most this many times the film's frame-to-frame
+#: noise (`frame_noise`) are a tracker's correlated errors (1.2-1.8 times on rendered
+#: videos), not a model's misfit (10-100 times).
+NOISE_FACTOR = 3.0
 
 
 class ModelFit(NamedTuple):
@@ -83,6 +87,8 @@ class ModelFit(NamedTuple):
         Whether the fit reproduces the positions to rounding (`EXACT_FIT`): then there is no
         noise, the residuals count as white, and AICc cannot weigh it against another
         exact fit.
+    noise : float
+        The film's frame-to-frame noise per coordinate, m (`frame_noise`).
     """
 
     model: str
@@ -111,6 +117,7 @@ class ModelFit(NamedTuple):
     autocorrelation_sd: float = math.nan
     orbital_rate: float = math.nan
     exact: bool = False
+    noise: float = math.nan
 
     @property
     def ci95(self) -> tuple[float, float]:
@@ -129,6 +136,12 @@ class ModelFit(NamedTuple):
         """Whether the residuals pass as white noise: |autocorrelation| < `WHITENESS_Z` sd
         (or the fit is exact to rounding, and there is no noise to test)."""
         return self.exact or not abs(self.whiteness_z) > WHITENESS_Z
+
+    @property
+    def describes(self) -> bool:
+        """Whether the model describes the film: white residuals, or correlated ones at
+        most `NOISE_FACTOR` times the film's noise (`noise`)."""
+        return self.white or self.rms_residual <= NOISE_FACTOR * self.noise
 
 
 def aic(rss: float, n_observations: int, n_params: int) -> float:
@@ -225,6 +238,44 @@ def whiteness(residuals: ArrayLike) -> tuple[float, float]:
         e = e / scale
         rho = float(np.sum(e[1:] * e[:-1]) / np.sum(e * e))
     return rho, 1.0 / math.sqrt(pairs)
+
+
+def frame_noise(xy: ArrayLike) -> float:
+    """Return the noise per coordinate of tracked positions, from their third differences.
+
+    Parameters
+    ----------
+    xy : array_like
+        Shape (n, 2): positions in frame order.
+
+    Returns
+    -------
+    float
+        sqrt(median(d^2) / (20 * 0.4549)), d the third differences of both coordinates
+        (nan for fewer than 4 frames).
+
+    Notes
+    -----
+    A motion that is smooth from frame to frame (a quadratic over four frames) has no
+    third difference; independent noise of variance s^2 gives third differences of
+    variance 20 s^2 (the sum of the squared binomial coefficients 1, 3, 3, 1), and 0.4549
+    is the median of chi-square with one degree of freedom.  The median keeps the few
+    differences across a gap of lost frames from counting.  Noise correlated from frame
+    to frame gives a smaller value: it is the noise that no smooth model can follow.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from turntable import fit
+    >>> t = np.linspace(0.0, 2.0, 400)
+    >>> xy = np.c_[np.cos(t), np.sin(t)] + np.random.default_rng(0).normal(0, 1e-3, (400, 2))
+    >>> print(f"{fit.frame_noise(xy):.1e}")
+    1.0e-03
+    """
+    d = np.diff(np.asarray(xy, dtype=float), n=3, axis=0)
+    if d.shape[0] < 1:
+        return math.nan
+    return math.sqrt(float(np.median(d**2)) / (20.0 * 0.4549))
 
 
 class FilmFit(NamedTuple):

@@ -90,22 +90,30 @@ def frame_ranges(frames: list[int]) -> str:
 
 
 class _State:
-    """What is followed from frame to frame."""
+    """What is followed from frame to frame: the last position and the step per frame."""
 
     def __init__(self) -> None:
         self.last: NDArray | None = None
-        self.prev: NDArray | None = None
+        self.step: NDArray | None = None
         self.misses = 0
 
     def predict(self) -> NDArray:
         assert self.last is not None
-        if self.prev is None or self.misses:
+        if self.step is None:
             return self.last
-        return 2 * self.last - self.prev
+        return self.last + (self.misses + 1) * self.step
+
+    def speed(self) -> float | None:
+        """Px per frame, once known."""
+        return None if self.step is None else float(np.hypot(*self.step))
 
     def found(self, uv: NDArray) -> None:
-        self.prev = None if self.misses else self.last
+        if self.last is not None:
+            self.step = (uv - self.last) / (self.misses + 1)
         self.last, self.misses = uv, 0
+
+    def miss(self) -> None:
+        self.misses += 1
 
 
 def _pick(found: list[Blob], near: NDArray, area: float) -> Blob | None:
@@ -207,12 +215,8 @@ def _track(video: Video, ball_radius: float, platter_radius: float, rpm: float |
             found: Blob | None = b0
         else:
             near = ball.predict()
-            half = (
-                2.5 * r_px
-                + 4
-                + (ball.misses + 1)
-                * (0 if ball.prev is None else float(np.hypot(*(ball.last - ball.prev))) + 2 * r_px)
-            )
+            v = ball.speed()
+            half = 2.5 * r_px + 4 + (ball.misses + 1) * (0 if v is None else v + 2 * r_px)
             box = window(tuple(near), half, img.shape)
             found = _pick(blobs(img, box, platter_level, sign, threshold, allowed), near, ball_area)
         if found is not None and found.touches:
@@ -223,33 +227,31 @@ def _track(video: Video, ball_radius: float, platter_radius: float, rpm: float |
                 f"{name}: the ball reaches {where} at frame {index} (t = {t:.3f} s): cut the "
                 "video before it does"
             )
+        # the mark, unless it passes so close to the ball that their images may touch:
+        # then neither is measured on this frame
+        m: Blob | None = m0
+        if index:
+            near = mark.predict()
+            v = mark.speed()
+            half = 3 * r_mark + 4 + (mark_step if v is None else v + 2) * (mark.misses + 1)
+            m = None
+            if found is not None and math.hypot(found.u - near[0], found.v - near[1]) < (
+                r_px + r_mark + 3 + 0.5 * mark.misses * (v or mark_step)
+            ):
+                found = None
+            else:
+                box = window(tuple(near), half, img.shape)
+                m = _pick(
+                    blobs(img, box, platter_level, mark_sign, threshold, allowed), near, mark_area
+                )
         if found is None:
-            ball.misses += 1
+            ball.miss()
             ball_uv.append((math.nan, math.nan))
         else:
             ball.found(np.array([found.u, found.v]))
             ball_uv.append((found.u, found.v))
-        # the mark
-        if index == 0:
-            m: Blob | None = m0
-        else:
-            near = mark.predict()
-            half = (
-                3 * r_mark
-                + 4
-                + (
-                    mark_step
-                    if mark.prev is None
-                    else float(np.hypot(*(mark.last - mark.prev))) + 2
-                )
-                * (mark.misses + 1)
-            )
-            box = window(tuple(near), half, img.shape)
-            m = _pick(
-                blobs(img, box, platter_level, mark_sign, threshold, allowed), near, mark_area
-            )
         if m is None:
-            mark.misses += 1
+            mark.miss()
             mark_uv.append((math.nan, math.nan))
         else:
             mark.found(np.array([m.u, m.v]))
@@ -302,7 +304,7 @@ def _finish(info, t, ball_uv, mark_uv, rim_pts, rim, first, ball_radius, platter
         len(rim_pts),
     )
     ok = np.isfinite(ball_uv[:, 0])
-    xy = camera.back_project(cal.pose, ball_uv[ok], height=ball_radius)
+    xy = camera.sphere_centre(cal.pose, ball_uv[ok], ball_radius)
     mirrored = cal.omega < 0
     if mirrored:
         xy[:, 1] *= -1
@@ -310,7 +312,8 @@ def _finish(info, t, ball_uv, mark_uv, rim_pts, rim, first, ball_radius, platter
     lost = [int(i) for i in np.flatnonzero(~ok)]
     if lost:
         warnings.append(
-            f"the ball was not found on {len(lost)} of {t.size} frames ({frame_ranges(lost)}): "
+            f"the ball was not found, or was next to the mark, on {len(lost)} of {t.size} frames "
+            f"({frame_ranges(lost)}): "
             "they are gaps of the film"
         )
     omega = abs(cal.omega)

@@ -386,8 +386,9 @@ def problems(
         out.append(
             f"the residuals of the {judged} fit (rms {f.rms_residual:.3g} m, "
             f"{f.rms_residual / f.noise:.3g} times the film's frame-to-frame noise) are "
-            f"correlated from frame to frame (lag-1 autocorrelation {f.autocorrelation:.3g}), "
-            "as a tracker's errors are: the standard errors allow for it (Newey-West)"
+            f"correlated from frame to frame (lag-1 autocorrelation {f.autocorrelation:.3g}): "
+            "a tracker's correlated errors, or a small misfit (check --omega/--rpm, --k, "
+            "--axis); the standard errors allow for the correlation (Newey-West)"
         )
     # Omega and the axis are judged on the model the film decisively selects: with no model
     # known, each model's freed values can wander (on a short film the rolling model with

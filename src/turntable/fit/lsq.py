@@ -3,9 +3,10 @@
 Standard errors come from the Jacobian J at the optimum and the residual variance
 s^2 = RSS / (N - p) (N = 2n coordinates, p parameters).  Where the residuals are
 correlated from frame to frame (`turntable.fit.whiteness`; a tracker's errors can be), the
-Newey-West estimate with Andrews' bandwidth (`turntable.fit.parameters`) replaces it when
-larger.  (It is not when the residuals are a model's smooth misfit: the scores then sum to
-zero over the film.)
+larger of two estimates replaces it: that for AR(1) noise of the residuals' lag-1
+autocorrelation rho, sqrt((1 + rho) / (1 - rho)) times it, exact for smooth columns of J;
+and Newey-West's (`turntable.fit.parameters`), which also holds for longer memory but
+falls short on few informative frames (the scores of the fitted film sum to zero).
 se(c) = c se(ln c) (delta method), and the 95 % interval exp(ln c +- 1.96 se(ln c)),
 which stays positive and is the honest form when se(ln c) is not small.
 
@@ -309,7 +310,8 @@ def fit_model(
             ses = [_stderr_of(jac, i, sigma) for i in range(p)]
             if not white:
                 lags = bartlett_lags(rho, tau.size)
-                ses = [max(se, _hac_stderr_of(jac, i, r, lags)) for i, se in enumerate(ses)]
+                ar1 = math.sqrt((1 + rho) / (1 - rho)) if 0 < rho < 1 else 1.0
+                ses = [max(ar1 * se, _hac_stderr_of(jac, i, r, lags)) for i, se in enumerate(ses)]
     except (ValueError, np.linalg.LinAlgError):
         ses = [math.nan] * p
     bound = None

@@ -53,6 +53,9 @@ API_MODULES = [
     "turntable.fit",
     "turntable.claims",
     "turntable.config",
+    "turntable.video.track",
+    "turntable.video.render",
+    "turntable.video.camera",
 ]
 
 

@@ -17,6 +17,8 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+__all__ = ["Pose", "back_project", "project", "sphere_centre"]
+
 
 class Pose(NamedTuple):
     """A camera: focal length (px), tilt and roll (rad), look-at point (m), distance (m),
@@ -84,12 +86,31 @@ def apply(h: NDArray[np.float64], points: ArrayLike) -> NDArray[np.float64]:
 
 
 def project(pose: Pose, points: ArrayLike, height: float = 0.0) -> NDArray[np.float64]:
-    """Image points (u, v) of points (x, y) of the plane z = height."""
+    """Image points (u, v) of points (x, y) of the plane z = height.
+
+    Examples
+    --------
+    The axis seen by a camera 40 cm away looking straight at it is at the image's centre:
+
+    >>> from turntable.video import camera
+    >>> pose = camera.Pose(1000.0, 0.3, 0.0, (0.0, 0.0), 0.4, (1280, 720))
+    >>> print(camera.project(pose, [[0.0, 0.0]]))
+    [[639.5 359.5]]
+    """
     return apply(homography(pose, height), points)
 
 
 def back_project(pose: Pose, pixels: ArrayLike, height: float = 0.0) -> NDArray[np.float64]:
-    """Points (x, y) of the plane z = height seen at the image points ``pixels`` (u, v)."""
+    """Points (x, y) of the plane z = height seen at the image points ``pixels`` (u, v).
+
+    Examples
+    --------
+    >>> from turntable.video import camera
+    >>> pose = camera.Pose(1000.0, 0.3, 0.0, (0.0, 0.0), 0.4, (1280, 720))
+    >>> uv = camera.project(pose, [[0.05, -0.02]], height=0.01)
+    >>> print(camera.back_project(pose, uv, height=0.01).round(12))
+    [[ 0.05 -0.02]]
+    """
     return apply(np.linalg.inv(homography(pose, height)), pixels)
 
 

@@ -24,6 +24,8 @@ from turntable.fit.models import positions
 from turntable.video import camera
 from turntable.video.camera import Pose
 
+__all__ = ["SYNTHETIC", "Rendered", "Scene", "render_video"]
+
 #: Word that the file name and the metadata of every rendered video carry.
 SYNTHETIC = "SYNTHETIC"
 #: Grey levels (0-255) of the scene.
@@ -276,6 +278,18 @@ def render_video(
     the ball at (x, -y) and turns the platter the other way; the returned positions stay
     those of the model, in which the platter turns counterclockwise (as `turntable.video.track`
     reports a clockwise platter's film).
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> from turntable.film import Setup
+    >>> from turntable.video.render import Scene, render_video
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "ball_SYNTHETIC.mp4"
+    >>> scene = Scene(size=(320, 180), fps=30.0, duration=0.5, clockwise=True, jitter=0.5)
+    >>> truth = render_video(path, "slipping", 2.0, [7, 0, 0, 0.4, 0, 0],
+    ...                      Setup(radius=0.008, omega=3.49, k=0.4), scene)
+    >>> print(truth.film.t.size, "frames", path.stat().st_size > 0)
+    16 frames True
     """
     import av
 

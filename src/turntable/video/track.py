@@ -4,10 +4,11 @@
 its rim refined to a fraction of a pixel), the ball (the blob of the platter whose area is
 closest to that of a ball of radius R seen there) and the mark (the largest other blob in
 the outer part of the platter).  It then follows both from frame to frame in windows about
-where they are expected, and collects the rim's points on a dozen frames spread over the
-video.  `calibrate` then fits the camera and Omega; the ball's image, whose centre is R
-above the platter, is mapped to the plane z = R.  A frame where the ball is not found is a
-gap of the film (never a guessed position), named in the warnings.
+where their last steps predict them (neither is measured where the mark passes next to the
+ball), and collects the rim's points on a dozen frames spread over the video.  `calibrate`
+then fits the camera and Omega; the ball's centre is the point R above the platter whose
+sphere's image is centred on the blob (`camera.sphere_centre`).  A frame where the ball is
+not measured is a gap of the film (never a guessed position), named in the warnings.
 """
 
 from __future__ import annotations
@@ -24,6 +25,8 @@ from turntable.video import camera
 from turntable.video.calibrate import Calibration, calibrate
 from turntable.video.decode import Video, VideoError, VideoInfo
 from turntable.video.detect import Blob, Ellipse, blobs, find_platter, levels, refine_rim, window
+
+__all__ = ["Track", "track_video"]
 
 #: Rim points are collected on this many frames, spread over the video.
 RIM_FRAMES = 12
@@ -161,12 +164,47 @@ def track_video(
 ) -> tuple[Track, list[str]]:
     """Track the ball of a video; return the track and the warnings (one line each).
 
+    Parameters
+    ----------
+    path : str or path-like
+        The video (any container and codec that PyAV reads).
+    ball_radius, platter_radius : float
+        R and P, m.
+    rpm : float, optional
+        The platter's rate as given, checked against the one measured (a warning if they
+        differ by more than 4 standard errors and 0.1 %).
+
+    Returns
+    -------
+    track : Track
+    warnings : list of str
+
     Raises
     ------
     VideoError
         A video that cannot be read or has no frame, no platter, no ball or no mark on its
         first frame, a ball that reaches the platter's rim or the image's edge, a mark lost
         in nearly every frame.
+
+    Examples
+    --------
+    A SYNTHETIC video, 480x270 px at 30 frames/s for 1 s, of a ball slipping on a platter
+    at 45 rpm:
+
+    >>> import tempfile, pathlib
+    >>> import numpy as np
+    >>> from turntable.film import Setup, rpm_to_omega
+    >>> from turntable.video.render import Scene, render_video
+    >>> from turntable.video.track import track_video
+    >>> setup = Setup(radius=0.008, omega=rpm_to_omega(45.0), k=0.4)
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "ball_SYNTHETIC.mp4"
+    >>> scene = Scene(size=(480, 270), fps=30.0, duration=1.0)
+    >>> truth = render_video(path, "slipping", 2.0, [7, 0, 0, 0.4, 0, 0], setup, scene)
+    >>> track, warnings = track_video(path, ball_radius=0.008, platter_radius=0.15)
+    >>> err = np.hypot(track.film.x - truth.film.x, track.film.y - truth.film.y)
+    >>> print(f"{track.film.t.size} frames, Omega {abs(track.calibration.omega):.3f} rad/s, "
+    ...       f"rms error {np.sqrt(np.mean(err**2)) / 0.008:.2f} R")
+    31 frames, Omega 4.711 rad/s, rms error 0.01 R
     """
     with Video(path) as video:
         return _track(video, ball_radius, platter_radius, rpm)

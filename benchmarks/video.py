@@ -148,7 +148,9 @@ def measure(truth: dict[str, Any], path: Path, truth_file: Path) -> dict[str, An
         "residual_over_noise": own.rms_residual / own.noise,
         "distinguishable": truth["distinct"],
         "selected": result.selected,
-        "decisive": fit.checked_selection(result, None).decisive,
+        "decisive": fit.checked_selection(
+            result, fit.consistency(track.film, measured, result, fit_axis=True)
+        ).decisive,
         "track_seconds": seconds,
         "track_frames_per_s": true["t"].size / seconds,
     }

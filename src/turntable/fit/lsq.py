@@ -5,8 +5,9 @@ s^2 = RSS / (N - p) (N = 2n coordinates, p parameters).  Where the residuals are
 correlated from frame to frame (`turntable.fit.whiteness`; a tracker's errors can be), the
 larger of two estimates replaces it: that for AR(1) noise of the residuals' lag-1
 autocorrelation rho, sqrt((1 + rho) / (1 - rho)) times it, exact for smooth columns of J;
-and Newey-West's (`turntable.fit.parameters`), which also holds for longer memory but
-falls short on few informative frames (the scores of the fitted film sum to zero).
+and Newey-West's with 1.3 sqrt(n) lags (`turntable.fit.parameters`), which also holds for
+longer memory but falls short on few informative frames (the scores of the fitted film sum
+to zero).
 se(c) = c se(ln c) (delta method), and the 95 % interval exp(ln c +- 1.96 se(ln c)),
 which stays positive and is the honest form when se(ln c) is not small.
 
@@ -37,7 +38,7 @@ from turntable.fit.parameters import (
     _layout,
     _stderr_of,
     _unpack,
-    bartlett_lags,
+    newey_west_lags,
 )
 from turntable.fit.results import (
     DECISIVE,
@@ -309,7 +310,7 @@ def fit_model(
         with np.errstate(all="ignore"):
             ses = [_stderr_of(jac, i, sigma) for i in range(p)]
             if not white:
-                lags = bartlett_lags(rho, tau.size)
+                lags = newey_west_lags(tau.size)
                 ar1 = math.sqrt((1 + rho) / (1 - rho)) if 0 < rho < 1 else 1.0
                 ses = [max(ar1 * se, _hac_stderr_of(jac, i, r, lags)) for i, se in enumerate(ses)]
     except (ValueError, np.linalg.LinAlgError):

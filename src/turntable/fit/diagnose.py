@@ -297,8 +297,9 @@ def problems(
         of the selected model (of each, with none selected or a selection that is not
         decisive, `checked_selection`); residuals of the selected
         model (or, with none selected,
-        of the better fit) that are not white noise (`whiteness`), which means that
-        neither model fits to the noise level; with ``check``, a given Omega or axis more
+        of the better fit) that are not white noise (`whiteness`): far above the film's
+        noise, neither model fits to the noise level (`ModelFit.describes`), at it, a
+        tracker's correlated errors or a small misfit; with ``check``, a given Omega or axis more
         than `CONSISTENCY_Z` standard errors from the one the film prefers (judged on the
         model selected, if decisively), and a selection that changes decisively when they
         are free.
@@ -388,7 +389,7 @@ def problems(
             f"{f.rms_residual / f.noise:.3g} times the film's frame-to-frame noise) are "
             f"correlated from frame to frame (lag-1 autocorrelation {f.autocorrelation:.3g}): "
             "a tracker's correlated errors, or a small misfit (check --omega/--rpm, --k, "
-            "--axis); the standard errors allow for the correlation (Newey-West)"
+            "--axis); the standard errors allow for the correlation (AR(1), Newey-West)"
         )
     # Omega and the axis are judged on the model the film decisively selects: with no model
     # known, each model's freed values can wander (on a short film the rolling model with

@@ -210,7 +210,7 @@ def result_json(
         ),
         "stderr": (
             "from the Jacobian at the optimum and the residual variance RSS/(N - p); where "
-            "the residuals are not white, the Newey-West estimate if larger"
+            "the residuals are not white, the larger of the AR(1) and Newey-West estimates"
         ),
         "relative_stderr": "standard error of ln(coefficient), i.e. stderr / coefficient",
         "ci95": "95 % interval exp(ln c -+ 1.96 relative_stderr): use it when relative_stderr "

@@ -3,7 +3,7 @@
 Renders videos with `turntable.video.render.render_video` (1280x720, 240 frames/s, 10 s)
 of random balls: models alternating, the camera tilted uniformly in 0-35 degrees and
 rolled by up to 5, every third platter clockwise and every fourth video at a variable frame
-rate (frame times off the grid by up to 0.3 intervals), ball radius 6-10 mm on a platter
+rate (frame times off the grid by up to 0.15 intervals), ball radius 6-10 mm on a platter
 of radius 15 cm at 33 1/3 rpm, starting 4-9 cm from the axis with a random velocity; the
 coefficient log-uniform in mu0 [0.05, 20] or delta [0.003, 0.3], redrawn until the film
 can measure it (Fig. 8: predicted relative standard error below the configured reliable

@@ -276,8 +276,8 @@ def fit_command(args: argparse.Namespace) -> int:
         _fail(f"turntable fit: error: {args.data} is a video: give --platter-radius P (m)")
     if not video and args.omega is None and args.rpm is None:
         _fail("turntable fit: error: one of the arguments --omega --rpm is required")
-    # a video's image of the ball's centre is off by a shading-dependent thousandth of R,
-    # more than a rolling fit's precision: the rolling model's axis is fitted
+    # a video's image of the ball's centre is off by a few thousandths of R in a fixed
+    # direction, more than a rolling fit's precision: the rolling model's axis is fitted
     options = {"fit_omega": args.fit_omega, "fit_axis": args.fit_axis or video}
     p = max(fit.n_parameters(m, **options) for m in fit.MODELS)
     tracked = None

@@ -102,12 +102,16 @@ def draw(rng: np.random.Generator, i: int, duration: float, level: float) -> dic
 
 
 def render(truth: dict[str, Any], path: Path) -> Path:
-    """Render the video of ``truth`` unless it is there; its true positions beside it."""
+    """Render the video of ``truth`` unless it is there, rendered from the same draw; its
+    true positions beside it."""
     truth_file = path.with_suffix(".truth.npz")
-    if not (path.exists() and truth_file.exists()):
-        r = render_video(path, truth["model"], truth["coefficient"], truth["state0"],
-                         truth["setup"], truth["scene"], seed=truth["seed"])  # fmt: skip
-        np.savez(truth_file, t=r.film.t, x=r.film.x, y=r.film.y)
+    key = repr((truth["model"], truth["coefficient"], list(truth["state0"]), truth["setup"],
+                truth["scene"], truth["seed"]))  # fmt: skip
+    if path.exists() and truth_file.exists() and str(np.load(truth_file)["key"]) == key:
+        return truth_file
+    r = render_video(path, truth["model"], truth["coefficient"], truth["state0"],
+                     truth["setup"], truth["scene"], seed=truth["seed"])  # fmt: skip
+    np.savez(truth_file, t=r.film.t, x=r.film.x, y=r.film.y, key=key)
     return truth_file
 
 
@@ -145,7 +149,7 @@ def measure(truth: dict[str, Any], path: Path, truth_file: Path) -> dict[str, An
         "z": float((own.coefficient - c) / own.stderr),
         "covered": bool(own.bound is None and abs(own.coefficient - c) < 2 * own.stderr),
         "residual_lag1": own.autocorrelation,
-        "residual_over_noise": own.rms_residual / own.noise,
+        "residual_over_noise": own.noise_ratio,
         "distinguishable": truth["distinct"],
         "selected": result.selected,
         "decisive": fit.checked_selection(

@@ -571,6 +571,28 @@ def test_correlated_noise_gets_wider_standard_errors_that_cover(model: str) -> N
     assert np.mean(z < 2) >= 0.85
 
 
+def test_frame_noise_of_uneven_frames_and_of_a_film_without_noise() -> None:
+    """The noise is measured with the frame times as they are (a variable frame rate is no
+    noise); a ball tracked to whole millimetres that hardly moves has next to none, and
+    the warnings of a fit come out even with none."""
+    rng = np.random.default_rng(3)
+    t = (np.arange(600) + 0.5 + rng.uniform(-0.4, 0.4, 600)) / 60.0
+    z0 = film.state_from_si([0.05, 0.0], [0.05, 0.0], [0.0, 0.0], RIG)
+    xy = fit.positions("slipping", 3.0, z0, t, RIG)
+    assert fit.frame_noise(t, xy) < 1e-6
+    assert fit.frame_noise(np.arange(600) / 60.0, xy) > 1e-4  # the same steps taken as even
+    t = np.arange(300) / 30.0
+    data = film.Film(t, np.round(0.05 + 4e-4 * t, 3), np.round(0.02 - 3e-4 * t, 3))
+    r = fit.fit_film(data, RIG)
+    f = r.fits["slipping"]
+    assert f.noise < 1e-12
+    assert not f.white
+    assert not f._replace(noise=0.0).describes
+    assert f._replace(noise=0.0).noise_ratio == math.inf
+    zero = r._replace(fits={m: g._replace(noise=0.0) for m, g in r.fits.items()})
+    assert any("inf times" in w for w in fit.problems(zero, data, RIG))
+
+
 def test_wrong_omega_on_the_configured_camera_leaves_structure() -> None:
     """On the configured camera (240 frames/s, 10 s, 0.2 mm), 33.2 rpm given for 33 1/3
     selects the wrong model by thousands of AICc, with residuals far from white though only
@@ -583,7 +605,8 @@ def test_wrong_omega_on_the_configured_camera_leaves_structure() -> None:
     assert r.selected == "rolling_resistance"
     assert r.aicc_difference > 1000
     assert not r.fits["rolling_resistance"].white
-    assert any("correlated" in w and "--omega" in w for w in fit.problems(r, data, given))
+    assert r.fits["rolling_resistance"].describes  # 1.3 times the noise
+    assert any("a small misfit (check --omega" in w for w in fit.problems(r, data, given))
     check = fit.consistency(data, given, r)
     assert not fit.checked_selection(r, check).decisive
     assert abs(check.omega_z) > fit.CONSISTENCY_Z

@@ -194,7 +194,7 @@ def undescribed(result: FilmFit) -> str:
     why = []
     if not f.describes:
         why.append(
-            f"its residuals (rms {f.rms_residual:.3g} m, {f.rms_residual / f.noise:.3g} times "
+            f"its residuals (rms {f.rms_residual:.3g} m, {f.noise_ratio:.3g} times "
             f"the film's noise) are correlated from frame to frame (lag-1 autocorrelation "
             f"{f.autocorrelation:.3g}, {abs(f.whiteness_z):.3g} times the spread of white noise)"
         )
@@ -378,7 +378,7 @@ def problems(
     if not f.describes:
         out.append(
             f"neither model fits to the noise level: the residuals of the {judged} fit "
-            f"(rms {f.rms_residual:.3g} m, {f.rms_residual / f.noise:.3g} times the film's "
+            f"(rms {f.rms_residual:.3g} m, {f.noise_ratio:.3g} times the film's "
             f"noise) are correlated from frame to frame (lag-1 autocorrelation "
             f"{f.autocorrelation:.3g}, {abs(f.whiteness_z):.3g} times its spread for white "
             "noise); check --omega/--rpm, --k, --axis and the sign of y"
@@ -386,7 +386,7 @@ def problems(
     elif not f.white:
         out.append(
             f"the residuals of the {judged} fit (rms {f.rms_residual:.3g} m, "
-            f"{f.rms_residual / f.noise:.3g} times the film's frame-to-frame noise) are "
+            f"{f.noise_ratio:.3g} times the film's frame-to-frame noise) are "
             f"correlated from frame to frame (lag-1 autocorrelation {f.autocorrelation:.3g}): "
             "a tracker's correlated errors, or a small misfit (check --omega/--rpm, --k, "
             "--axis); the standard errors allow for the correlation (AR(1), Newey-West)"

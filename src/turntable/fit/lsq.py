@@ -355,7 +355,7 @@ def fit_model(
         autocorrelation_sd=rho_sd,
         orbital_rate=rate,
         exact=exact,
-        noise=frame_noise(fitter.data.reshape(-1, 2)) * setup.radius,
+        noise=frame_noise(tau, fitter.data.reshape(-1, 2)) * setup.radius,
     )
 
 

@@ -66,8 +66,8 @@ class Scene(NamedTuple):
         The platter turns clockwise as the camera sees it: the scene is the mirror image
         of the counterclockwise one.
     jitter : float
-        Variable frame rate: each frame's time is moved by up to +- jitter / 2 frame
-        intervals (uniformly at random, below 1), as phones record.
+        Variable frame rate: each frame's time but the first is moved by up to +- jitter / 2
+        frame intervals (uniformly at random; at most 0.9), as phones record.
     """
 
     platter_radius: float = 0.15
@@ -306,11 +306,12 @@ def render_video(
     n = math.floor(scene.duration * scene.fps * (1 + 1e-12)) + 1
     time_base = Fraction(1, 90000)
     t = np.arange(n) / scene.fps
-    if not 0.0 <= scene.jitter < 1.0:
-        raise ValueError(f"Scene.jitter must be in [0, 1) frame intervals; got {scene.jitter}")
+    if not 0.0 <= scene.jitter <= 0.9:
+        raise ValueError(f"Scene.jitter must be in [0, 0.9] frame intervals; got {scene.jitter}")
     if scene.jitter:
         shift = np.random.default_rng(seed).uniform(-0.5, 0.5, n) * scene.jitter / scene.fps
-        t = np.maximum(t + shift, 0.0)
+        shift[0] = 0.0  # state0 is the state at the first opening
+        t = t + shift
     t = np.round(t * time_base.denominator) / time_base.denominator
     sign = -1.0 if scene.clockwise else 1.0
     renderer = _Renderer(scene, pose, setup.radius, sign * setup.omega, seed)

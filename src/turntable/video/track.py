@@ -119,6 +119,38 @@ class _State:
         self.misses += 1
 
 
+class _Turning(_State):
+    """The mark: followed in angle about the rim's centre, in the frame where the rim is a
+    circle, so that a prediction across misses stays on the mark's path."""
+
+    def __init__(self, rim: Ellipse) -> None:
+        super().__init__()
+        self.rim = rim
+        c, s = math.cos(rim.angle), math.sin(rim.angle)
+        self.to_circle = np.array([[c / rim.a, s / rim.a], [-s / rim.b, c / rim.b]])
+        self.turn = 0.0
+
+    def _polar(self, uv: NDArray) -> tuple[float, float]:
+        p = self.to_circle @ (uv - self.rim.centre)
+        return math.atan2(p[1], p[0]), math.hypot(p[0], p[1])
+
+    def predict(self) -> NDArray:
+        assert self.last is not None
+        if self.step is None:
+            return self.last
+        angle, radius = self._polar(self.last)
+        angle += (self.misses + 1) * self.turn
+        p = radius * np.array([math.cos(angle), math.sin(angle)])
+        return np.linalg.solve(self.to_circle, p) + self.rim.centre
+
+    def found(self, uv: NDArray) -> None:
+        if self.last is not None:
+            step = self._polar(uv)[0] - self._polar(self.last)[0]
+            self.turn = (step + math.pi) % (2 * math.pi) - math.pi
+            self.turn /= self.misses + 1
+        super().found(uv)
+
+
 def _pick(found: list[Blob], near: NDArray, area: float) -> Blob | None:
     ok = [b for b in found if 0.25 * area < b.area < 4.0 * area]
     if not ok:
@@ -218,7 +250,8 @@ def _track(video: Video, ball_radius: float, platter_radius: float, rpm: float |
     mark_uv: list[tuple[float, float]] = []
     rim_pts: list[NDArray] = []
     every = max(info.frames // RIM_FRAMES, 1) if info.frames else 30
-    ball, mark = _State(), _State()
+    ball: _State = _State()
+    mark: _State = _State()
     for index, t, img in video.frames():
         if index == 0:
             first = img.copy()
@@ -243,6 +276,7 @@ def _track(video: Video, ball_radius: float, platter_radius: float, rpm: float |
             mark_step = (
                 (rpm / 60 * 2 * math.pi if rpm else 8.0) * rim.a * 0.95 / (info.rate or 30.0)
             )
+            mark = _Turning(rim)
         times.append(t)
         if index % every == 0 and index:
             rim_pts.append(_rim_points(img, rim, platter_level, outside))
@@ -274,14 +308,17 @@ def _track(video: Video, ball_radius: float, platter_radius: float, rpm: float |
             half = 3 * r_mark + 4 + (mark_step if v is None else v + 2) * (mark.misses + 1)
             m = None
             if found is not None and math.hypot(found.u - near[0], found.v - near[1]) < (
-                r_px + r_mark + 3 + 0.5 * mark.misses * (v or mark_step)
+                r_px + r_mark + 4
             ):
                 found = None
             else:
                 box = window(tuple(near), half, img.shape)
-                m = _pick(
-                    blobs(img, box, platter_level, mark_sign, threshold, allowed), near, mark_area
-                )
+                candidates = [
+                    b
+                    for b in blobs(img, box, platter_level, mark_sign, threshold, allowed)
+                    if found is None or math.hypot(b.u - found.u, b.v - found.v) > r_px
+                ]
+                m = _pick(candidates, near, mark_area)
         if found is None:
             ball.miss()
             ball_uv.append((math.nan, math.nan))

@@ -225,8 +225,9 @@ def result_json(
             f"{WHITENESS_Z:g} times that spread"
         ),
         "frame_noise_m": (
-            "noise per coordinate from the third differences of the positions; correlated "
-            f"residuals up to {NOISE_FACTOR:g} times it are a tracker's, not a misfit"
+            "noise per coordinate from the third differences of the positions at their "
+            f"times; correlated residuals more than {NOISE_FACTOR:g} times it: neither model "
+            "describes the film"
         ),
         "orbital_turns": "turns of the ball about its spiral centre during the film",
         "consistency": (

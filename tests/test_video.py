@@ -131,6 +131,27 @@ def test_clockwise_platter_at_a_variable_frame_rate(tmp_path) -> None:
     assert np.sqrt(np.mean(err**2)) < 0.05 * RADIUS
 
 
+def test_the_mark_passing_the_ball_is_a_gap_not_a_swap(tmp_path) -> None:
+    """A nearly free ball at rest beside the mark's circle: as the mark passes it, their
+    images touch; neither is measured there, and the mark is not taken for the ball."""
+    path = tmp_path / "pass_SYNTHETIC.mp4"
+    at = 0.88 * PLATTER - 1.1 * RADIUS  # the mark's circle is at 0.88 P (Scene.mark_at)
+    scene = SCENE._replace(duration=1.2, fps=60.0, tilt_deg=15.0)
+    omega = film.rpm_to_omega(45.0)
+    setup = SETUP._replace(omega=omega)
+    truth = render_video(path, "slipping", 1e-4, [0, at / RADIUS, 0, 0, 0, 0], setup, scene)
+    track, warnings = track_video(path, RADIUS, PLATTER)
+    # the mark passes the ball (at angle pi/2) at t = pi / (2 Omega)
+    passing = round(math.pi / (2 * omega) * scene.fps)
+    assert passing in track.lost
+    assert len(track.lost) < 20
+    assert any("next to the mark" in w for w in warnings)
+    keep = np.setdiff1d(np.arange(truth.film.t.size), track.lost)
+    err = np.hypot(track.film.x - truth.film.x[keep], track.film.y - truth.film.y[keep])
+    assert err.max() < 0.1 * RADIUS
+    assert abs(abs(track.calibration.omega) - omega) < 4 * track.calibration.omega_stderr
+
+
 # --------------------------------------------------------------------------- bad input
 def _noise_video(path: Path, frames: int = 3) -> None:
     import av

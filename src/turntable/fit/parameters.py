@@ -103,12 +103,17 @@ def _full_jacobian(others: NDArray[np.float64], j_c: NDArray[np.float64], lay: _
     return np.insert(others, lay.i_c, j_c, axis=1)
 
 
-def _stderr_of(jac: NDArray[np.float64], i: int, sigma: float) -> float:
-    """se of parameter i with every other column a nuisance: sigma / |(I - P) j_i|."""
+def _own_part(jac: NDArray[np.float64], i: int) -> NDArray[np.float64]:
+    """(I - P) j_i: the part of column i that no other column explains."""
     j_i = jac[:, i]
     rest = np.delete(jac, i, axis=1)
     coef, *_ = np.linalg.lstsq(rest, j_i, rcond=None)
-    norm = float(np.linalg.norm(j_i - rest @ coef))
+    return j_i - rest @ coef
+
+
+def _stderr_of(jac: NDArray[np.float64], i: int, sigma: float) -> float:
+    """se of parameter i with every other column a nuisance: sigma / |(I - P) j_i|."""
+    norm = float(np.linalg.norm(_own_part(jac, i)))
     return sigma / norm if norm > 0 else math.inf
 
 
@@ -127,10 +132,7 @@ def _hac_stderr_of(jac: NDArray[np.float64], i: int, residuals: NDArray, lags: i
     is estimated from the scores g_t = q_t . r_t of the frames (both coordinates) as
     sum_t g_t^2 + 2 sum_{l <= lags} (1 - l / (lags + 1)) sum_t g_t g_{t+l}, times N / (N - p).
     """
-    j_i = jac[:, i]
-    rest = np.delete(jac, i, axis=1)
-    coef, *_ = np.linalg.lstsq(rest, j_i, rcond=None)
-    q = j_i - rest @ coef
+    q = _own_part(jac, i)
     norm2 = float(q @ q)
     if not norm2 > 0:
         return math.inf

@@ -18,7 +18,7 @@ import numpy as np
 from _style import DOUBLE, save, setup, subplots
 from turntable import film
 from turntable.video import camera
-from turntable.video.decode import Video
+from turntable.video.decode import Video, rgb
 
 setup(snakemake)
 p = snakemake.params
@@ -27,7 +27,7 @@ res = json.loads(Path(snakemake.input.fit).read_text())
 track = film.read_film(snakemake.input.track)
 truth = film.read_film(snakemake.input.truth)
 with Video(snakemake.input.video) as video:
-    first = next(video.frames())[2].copy()
+    first = rgb(next(video.frames())[2])
 fig, axes = subplots(
     1,
     3,
@@ -43,7 +43,7 @@ h0 = np.array(cal["homography_plane_to_image"])
 h_ball = np.array(cal["homography_ball_plane_to_image"])
 s = np.linspace(0, 2 * np.pi, 361)
 circle = np.column_stack([np.cos(s), np.sin(s)])
-ax.imshow(first, cmap="gray", vmin=0, vmax=255)
+ax.imshow(first)
 for radius, style in ((cal["platter_radius_m"], "-"), (cal["mark_radius_m"], "--")):
     uv = camera.apply(h0, radius * circle)
     ax.plot(uv[:, 0], uv[:, 1], ls=style, color="tab:orange", lw=0.8)

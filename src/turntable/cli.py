@@ -286,7 +286,12 @@ def fit_command(args: argparse.Namespace) -> int:
         from turntable.video.cli import run_tracking
 
         tracked, notes = run_tracking(
-            args.data, args.radius, args.platter_radius, args.rpm, "turntable fit"
+            args.data,
+            args.radius,
+            args.platter_radius,
+            args.rpm,
+            "turntable fit",
+            {"ball_at": args.ball_at, "mark_at": args.mark_at},
         )
         for message in notes:
             _warn(message)

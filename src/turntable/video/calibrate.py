@@ -1,4 +1,4 @@
-"""The camera, from the rim of the platter and a mark turning with it.
+"""Stage 5, the camera: from the rim of the platter and a mark turning with it.
 
 The rim is a circle of radius P in the plane z = 0; the mark, a point of the platter at a
 distance r_m from the axis, is at the angle phi0 + Omega t.  `calibrate` fits, by least
@@ -23,7 +23,7 @@ from scipy.optimize import least_squares
 
 from turntable.video import camera
 from turntable.video.camera import Pose
-from turntable.video.detect import Ellipse
+from turntable.video.platter import Ellipse
 
 #: Spread of the priors on ln(focal length / image width) and on the roll (rad).
 PRIOR_LOG_FOCAL = 1.0
@@ -138,16 +138,33 @@ def _lag1(e: NDArray) -> float:
     return float(np.sum(e[1:] * e[:-1]) / den) if den > 0 else 0.0
 
 
-def _fit(prob: _Problem, b0: float, roll0: float):
-    """The camera from the rim alone, then with the mark, each kind of point weighed by its
-    own scatter."""
+def _rim_fit(prob: _Problem, b0: float, roll0: float) -> NDArray:
+    """The camera's six parameters from the rim alone."""
     size, rim, platter_radius = prob.size, prob.ellipse, prob.p
     f0 = float(size[0])
     theta = np.array([math.log(f0), b0, roll0, 0.0, 0.0, math.log(f0 * platter_radius / rim.a)])
     for _ in range(2):  # the look-at point that puts the axis at the ellipse's centre
         q = camera.back_project(_pose(theta, size), np.array(rim.centre))
         theta[3:5] -= q
-    theta6 = least_squares(prob.rim_only, theta, method="lm", x_scale="jac").x
+    return least_squares(prob.rim_only, theta, method="lm", x_scale="jac").x
+
+
+def rim_camera(
+    rim_pts: NDArray[np.float64], rim: Ellipse, size: tuple[int, int], platter_radius: float
+) -> Pose:
+    """A camera from the rim alone: right in scale and tilt, its focal length and which side
+    of the platter is nearer set by the priors (enough to see paths on the platter's plane)."""
+    roll0 = (-rim.angle + math.pi) % (2 * math.pi) - math.pi
+    prob = _Problem(rim_pts, np.zeros(0), np.zeros((0, 2)), size, platter_radius, rim, roll0, 1)
+    theta6 = _rim_fit(prob, math.acos(min(rim.b / rim.a, 1.0)), roll0)
+    return _pose(theta6, size)
+
+
+def _fit(prob: _Problem, b0: float, roll0: float):
+    """The camera from the rim alone, then with the mark, each kind of point weighed by its
+    own scatter."""
+    size = prob.size
+    theta6 = _rim_fit(prob, b0, roll0)
     # start of the mark's circle from its images seen through the rim-only camera
     q = camera.back_project(_pose(np.r_[theta6, 0, 0, 0], size), prob.mark_uv)
     ang = np.unwrap(np.arctan2(q[:, 1], q[:, 0]))

@@ -1,10 +1,12 @@
-"""``turntable track VIDEO --ball-radius R --platter-radius P [-o FILM.csv] [--rpm N] [--plot F]``.
+"""``turntable track VIDEO --ball-radius R --platter-radius P [-o FILM.csv] [--rpm N]
+[--ball-at U,V] [--mark-at U,V] [--plot F]``.
 
 Tracks the ball of a video (`turntable.video.track.track_video`) and writes FILM.csv (t, x,
 y in s and m, the lab frame, the axis at the origin; comment lines say how it was made)
 and FILM.json beside it (the calibration with its standard errors, the frame times, the
-lost frames).  Both are written only when everything has succeeded, each under a
-temporary name then renamed.  Bad input gets one line on stderr and exit status 2;
+lost frames, the checks).  Both are written only when everything has succeeded, each under a
+temporary name then renamed.  Bad input, and a track that fails a check, get one line on
+stderr and exit status 2 (with ``--plot``, the first frame with what was found is drawn);
 warnings (lost frames, a given --rpm the video contradicts) one line each.
 """
 
@@ -26,8 +28,9 @@ _DESCRIPTION = """\
 Track a ball on a turntable in a video and write the film that `turntable fit` reads.
 
 The first frame must show the whole platter, in contrast with what surrounds it, the ball
-in contrast with the platter, and a mark on the platter near its rim (another size than
-the ball).  Writes FILM.csv (t, x, y: s from the first frame, by the container's
+in contrast with the platter (by colour or brightness), and a small mark on the platter near
+its rim.  Where the search cannot tell which is which, --ball-at and --mark-at say it.
+Writes FILM.csv (t, x, y: s from the first frame, by the container's
 timestamps; the ball's centre in m, in the lab frame, the axis at the origin, the platter
 turning counterclockwise) and FILM.json (camera, Omega, metres per pixel, the image of the
 axis, each with its standard error; the frame times; the frames where the ball was lost,
@@ -48,19 +51,38 @@ def add_parser(sub: Any) -> None:
         "-o", "--output", metavar="FILM.csv", help="the film (default: VIDEO with suffix .csv)"
     )
     p.add_argument(
-        "--rpm", type=float, metavar="N", help="the platter's rate, checked against the video's"
+        "--rpm", type=float, metavar="N", help="the platter's rate: the mark must turn within 1 %%"
     )
     p.add_argument(
-        "--plot", metavar="FIG.png", help="draw the first frame with the rim, axis, mark, track"
+        "--plot",
+        metavar="FIG.png",
+        help="draw the first frame with the rim, axis, mark, track (or, on an error, with what "
+        "was found)",
     )
+
+
+def _pixel(text: str) -> tuple[float, float]:
+    try:
+        u, v = (float(x) for x in text.split(","))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected U,V (two numbers, px); got {text!r}") from None
+    if not (math.isfinite(u) and math.isfinite(v)):
+        raise argparse.ArgumentTypeError(f"expected finite U,V; got {text!r}")
+    return u, v
 
 
 def add_video_options(p: argparse.ArgumentParser, radius: str | None) -> None:
-    """--ball-radius (when ``radius`` names it) and --platter-radius."""
+    """--ball-radius (when ``radius`` names it), --platter-radius and the seeds."""
     if radius:
         p.add_argument(radius, type=float, required=True, metavar="R", help="ball radius, m")
     p.add_argument(
         "--platter-radius", type=float, metavar="P", help="radius of the platter's rim, m"
+    )
+    p.add_argument(
+        "--ball-at", type=_pixel, metavar="U,V", help="a video's first frame: a pixel on the ball"
+    )
+    p.add_argument(
+        "--mark-at", type=_pixel, metavar="U,V", help="a video's first frame: a pixel on the mark"
     )
 
 
@@ -75,9 +97,16 @@ def check_number(option: str, value: float | None) -> None:
 
 
 def run_tracking(
-    video: str, ball_radius: float, platter_radius: float, rpm: float | None, prog: str
+    video: str,
+    ball_radius: float,
+    platter_radius: float,
+    rpm: float | None,
+    prog: str,
+    seeds: dict[str, Any] | None = None,
+    plot: str | None = None,
 ):
-    """Track, or fail with one line (exit status 2); return (track, warnings)."""
+    """Track, or fail with one line (exit status 2; with ``plot``, what was found is drawn
+    first); return (track, warnings).  ``seeds``: ball_at, mark_at."""
     try:
         import av  # noqa: F401
         import cv2  # noqa: F401
@@ -92,8 +121,12 @@ def run_tracking(
     if platter_radius <= ball_radius:
         fail(f"{prog}: error: --platter-radius {platter_radius:g} m must exceed the ball's radius")
     try:
-        return track_video(video, ball_radius, platter_radius, rpm)
+        return track_video(video, ball_radius, platter_radius, rpm, **(seeds or {}))
     except VideoError as exc:
+        if plot is not None and exc.found is not None:
+            from turntable.video.plot import plot_found
+
+            plot_found(plot, exc.found, video)
         fail(f"{prog}: error: {' '.join(str(exc).split())}")
 
 
@@ -156,7 +189,13 @@ def track_command(args: argparse.Namespace) -> int:
     if args.plot is not None:
         check_plot(args.plot, prog)
     track, warnings = run_tracking(
-        args.video, args.ball_radius, args.platter_radius, args.rpm, prog
+        args.video,
+        args.ball_radius,
+        args.platter_radius,
+        args.rpm,
+        prog,
+        {"ball_at": args.ball_at, "mark_at": args.mark_at},
+        args.plot,
     )
     from turntable.video.track import calibration_json
 

@@ -1,4 +1,5 @@
-"""Reading a video: its frames as grey images, with the times of the container (PyAV)."""
+"""Stage 1, decoding: a video's frames as `Picture` (luma and chroma planes, no copy), with
+the times of the container (PyAV); `lab` turns a window of a picture into CIELAB."""
 
 from __future__ import annotations
 
@@ -15,7 +16,31 @@ SYNTHETIC = "SYNTHETIC"
 
 
 class VideoError(ValueError):
-    """A video that cannot be tracked; the message says what is wrong, in one line."""
+    """A video that cannot be tracked; the message says what is wrong, in one line.
+
+    ``found``, when set, is what was found before the error (for ``--plot``).
+    """
+
+    def __init__(self, message: str, found: Any = None) -> None:
+        super().__init__(message)
+        self.found = found
+
+
+class Picture(NamedTuple):
+    """One frame as 4:2:0 Y'CbCr planes (uint8): luma (h, w), chroma (h/2, w/2) each, and
+    whether the levels are full-range (0-255) rather than video-range (16-235)."""
+
+    y: NDArray[np.uint8]
+    cb: NDArray[np.uint8]
+    cr: NDArray[np.uint8]
+    full_range: bool
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        return self.y.shape  # type: ignore[return-value]
+
+    def copy(self) -> Picture:
+        return Picture(self.y.copy(), self.cb.copy(), self.cr.copy(), self.full_range)
 
 
 class VideoInfo(NamedTuple):
@@ -76,8 +101,8 @@ class Video:
             {str(k): str(v) for k, v in self._container.metadata.items()},
         )
 
-    def frames(self) -> Iterator[tuple[int, float, NDArray[np.uint8]]]:
-        """Yield (index, time in s from the container's timestamps, grey image)."""
+    def frames(self) -> Iterator[tuple[int, float, Picture]]:
+        """Yield (index, time in s from the container's timestamps, picture)."""
         av = _import_av()
         name = self.info.path
         index = -1
@@ -90,7 +115,7 @@ class Video:
                     time = index / self.info.rate
                 else:
                     raise VideoError(f"{name}: frame {index} has no timestamp and no frame rate")
-                yield index, time, _grey(frame)
+                yield index, time, _picture(frame)
         except av.error.FFmpegError as exc:
             raise VideoError(f"{name}: cannot decode frame {index + 1} ({exc})") from None
 
@@ -104,13 +129,66 @@ class Video:
         self.close()
 
 
-def _grey(frame: Any) -> NDArray[np.uint8]:
-    """The luma plane of a YUV frame as it is (no copy), else a conversion to grey."""
+def _picture(frame: Any) -> Picture:
+    """The planes of a 4:2:0 frame as they are (no copy); other formats converted to it."""
     name = frame.format.name
-    if name.startswith(("yuv", "yuvj", "nv12", "nv21", "gray")) and not name.startswith(
-        ("gray16", "gray10", "gray12", "yuv420p10", "yuv422p10", "yuv444p10")
-    ):
-        plane = frame.planes[0]
-        data = np.frombuffer(plane, np.uint8).reshape(frame.height, plane.line_size)
-        return data[:, : frame.width]
-    return frame.to_ndarray(format="gray")
+    if name not in ("yuv420p", "yuvj420p"):
+        frame = frame.reformat(format="yuv420p")
+        name = "yuv420p"
+    planes = []
+    for k, plane in enumerate(frame.planes):
+        h = frame.height if k == 0 else (frame.height + 1) // 2
+        w = frame.width if k == 0 else (frame.width + 1) // 2
+        planes.append(np.frombuffer(plane, np.uint8).reshape(h, plane.line_size)[:, :w])
+    full = name == "yuvj420p" or int(getattr(frame, "color_range", 0) or 0) == 2
+    return Picture(planes[0], planes[1], planes[2], full)
+
+
+def window(centre: tuple[float, float], half: float, shape: tuple[int, int]) -> tuple[slice, slice]:
+    """The window of half-width ``half`` px about ``centre`` (u, v), cut to the image."""
+    u, v = centre
+    return (
+        slice(max(int(v - half), 0), min(int(v + half) + 2, shape[0])),
+        slice(max(int(u - half), 0), min(int(u + half) + 2, shape[1])),
+    )
+
+
+def lab(picture: Picture, box: tuple[slice, slice] | None = None) -> NDArray[np.float32]:
+    """CIELAB (L 0-100, a and b about -100-100; D65, sRGB primaries taken for BT.601's) of the
+    window ``box`` of a picture (rows, columns; all of it by default), shape (h, w, 3)."""
+    import cv2
+
+    return cv2.cvtColor(_rgb(picture, box), cv2.COLOR_RGB2Lab)
+
+
+def rgb(picture: Picture) -> NDArray[np.uint8]:
+    """The whole picture as RGB, uint8 (for drawing)."""
+    return (_rgb(picture, None) * 255.0 + 0.5).astype(np.uint8)
+
+
+def _rgb(picture: Picture, box: tuple[slice, slice] | None) -> NDArray[np.float32]:
+    """RGB in [0, 1] of a window, the chroma interpolated to the luma's pixels with H.264's
+    default siting (a chroma sample beside luma column 2i, between rows 2j and 2j + 1)."""
+    import cv2
+
+    rows, cols = box or (slice(0, picture.y.shape[0]), slice(0, picture.y.shape[1]))
+    y = picture.y[rows, cols].astype(np.float32)
+    h, w = y.shape
+    # dst (x, y) of the window -> chroma (x / 2, (y - 0.5) / 2), both offset by the window
+    m = np.array([[0.5, 0.0, cols.start / 2.0], [0.0, 0.5, (rows.start - 0.5) / 2.0]], np.float32)
+    flags = cv2.INTER_LINEAR | cv2.WARP_INVERSE_MAP
+    cb, cr = (
+        cv2.warpAffine(c, m, (w, h), flags=flags, borderMode=cv2.BORDER_REPLICATE).astype(
+            np.float32
+        )
+        for c in (picture.cb, picture.cr)
+    )
+    if picture.full_range:
+        yy, cbb, crr = y / 255.0, (cb - 128.0) / 255.0, (cr - 128.0) / 255.0
+    else:
+        yy, cbb, crr = (y - 16.0) / 219.0, (cb - 128.0) / 224.0, (cr - 128.0) / 224.0
+    rgb = np.empty((h, w, 3), np.float32)
+    rgb[..., 0] = yy + 1.402 * crr
+    rgb[..., 1] = yy - 0.344136 * cbb - 0.714136 * crr
+    rgb[..., 2] = yy + 1.772 * cbb
+    return np.clip(rgb, 0.0, 1.0, out=rgb)

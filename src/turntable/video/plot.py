@@ -14,7 +14,7 @@ def draw_frame(ax: Any, track: Any) -> None:
     """The first frame, grey, with the fitted rim (the circle of radius P seen by the fitted
     camera), the image of the axis, the mark's circle and its images, the ball's track."""
     cal = track.calibration
-    ax.imshow(track.first_frame, cmap="gray", vmin=0, vmax=255, interpolation="nearest")
+    ax.imshow(track.first_frame, interpolation="nearest")
     s = np.linspace(0, 2 * math.pi, 361)
     rim = camera.project(cal.pose, platter_circle(track, s))
     ax.plot(rim[:, 0], rim[:, 1], color="tab:orange", lw=0.8, label="rim (fitted camera)")
@@ -31,6 +31,39 @@ def platter_circle(track: Any, s: np.ndarray) -> np.ndarray:
     """Points of the rim in the plane (radius P from the calibration's scale)."""
     p = track.platter_radius
     return p * np.column_stack([np.cos(s), np.sin(s)])
+
+
+def plot_found(path: str, look: Any, name: str) -> None:
+    """Draw what was found on the first frame before an error (`turntable.video.track.
+    FirstLook`): the rim, and every candidate labelled with its place (u, v) and what it was
+    taken for."""
+    from matplotlib.figure import Figure
+
+    h, w = look.image.shape[:2]
+    fig = Figure(figsize=(6.4, 6.4 * h / w + 0.4), layout="constrained")
+    ax = fig.add_subplot()
+    ax.imshow(look.image, interpolation="nearest")
+    if look.rim is not None:
+        s = np.linspace(0, 2 * math.pi, 361)
+        c, si = math.cos(look.rim.angle), math.sin(look.rim.angle)
+        x, y = look.rim.a * np.cos(s), look.rim.b * np.sin(s)
+        u, v = look.rim.centre[0] + c * x - si * y, look.rim.centre[1] + si * x + c * y
+        ax.plot(u, v, color="tab:orange", lw=0.8, label="rim")
+    colours = {"ball": "tab:green", "mark": "tab:cyan"}
+    for cand in look.candidates:
+        turns = "" if math.isnan(cand.turns_at) else f", turns at {cand.turns_at:.2f} P"
+        ax.plot(cand.u, cand.v, "o", mfc="none", ms=8, color=colours.get(cand.kind, "tab:red"))
+        ax.annotate(
+            f"{cand.kind} ({cand.u:.0f},{cand.v:.0f}){turns}",
+            (cand.u, cand.v),
+            xytext=(6, 6),
+            textcoords="offset points",
+            fontsize=5,
+            color=colours.get(cand.kind, "tab:red"),
+        )
+    ax.set(xlim=(0, w - 1), ylim=(h - 1, 0))
+    ax.set_title(f"{name}: what was found on the first frame (u, v in px)", fontsize=8)
+    fig.savefig(path, dpi=150)
 
 
 def plot_track(path: str, track: Any) -> None:

@@ -1,18 +1,18 @@
-"""From a video to a film: the ball's centre in the lab frame, frame by frame.
+"""From a video to a film: the stages in order, and the `Track` they make.
 
-`track_video` reads the video once.  On the first frame it finds the platter (`find_platter`,
-its rim refined to a fraction of a pixel), the ball (the blob of the platter whose area is
-closest to that of a ball of radius R seen there) and the mark (the largest other blob in
-the outer part of the platter).  It then follows both from frame to frame in windows about
-where their last steps predict them (neither is measured where the mark passes next to the
-ball), and collects the rim's points on a dozen frames spread over the video.  `calibrate`
-then fits the camera and Omega; the ball's centre is the point R above the platter whose
-sphere's image is centred on the blob (`camera.sphere_centre`).  A frame where the ball is
-not measured is a gap of the film (never a guessed position), named in the warnings.
+`track_video` decodes the video (`decode`), finds the platter's rim on the first frame
+(`platter`), the ball and the mark on the first frames (`find`), follows both through the
+video (`follow`), fits the camera and the platter's rate to the rim and the turning mark
+(`calibrate`) and checks that what it found agrees with itself (`check`).  The ball's centre
+is the point R above the platter whose sphere's image is centred on the ball's blob
+(`camera.sphere_centre`).  A frame where the ball is not measured is a gap of the film (never
+a guessed position), named in the warnings.  Each stage takes plain data and returns plain
+data.
 """
 
 from __future__ import annotations
 
+import itertools
 import math
 import os
 from typing import Any, NamedTuple
@@ -22,19 +22,28 @@ from numpy.typing import NDArray
 
 from turntable.film import Film
 from turntable.video import camera
-from turntable.video.calibrate import Calibration, calibrate
-from turntable.video.decode import Video, VideoError, VideoInfo
-from turntable.video.detect import Blob, Ellipse, blobs, find_platter, levels, refine_rim, window
+from turntable.video.calibrate import Calibration, calibrate, rim_camera
+from turntable.video.check import checks, first_failure
+from turntable.video.decode import Picture, Video, VideoError, VideoInfo, lab, rgb
+from turntable.video.find import PROBE_FRAMES, PROBE_SECONDS, Candidate, find
+from turntable.video.follow import Paths, follow
+from turntable.video.platter import Ellipse, find_platter
 
-__all__ = ["Track", "track_video"]
+__all__ = ["FirstLook", "Track", "track_video"]
 
-#: Rim points are collected on this many frames, spread over the video.
-RIM_FRAMES = 12
-#: A blob differs from the platter's grey level by at least this many times the platter's
-#: spread (and at least `MIN_CONTRAST` levels).
-CONTRAST_SPREAD, MIN_CONTRAST = 5.0, 12.0
 #: Fewest frames in which the mark must be found.
 MIN_MARK_FRAMES = 10
+#: The platter differs from what surrounds it by at least this (CIELAB distance).
+MIN_RIM_CONTRAST = 8.0
+
+
+class FirstLook(NamedTuple):
+    """What was found on the first frame: the image (RGB), the rim (None if not found) and
+    the candidates for the ball and the mark (`turntable.video.find.Candidate`)."""
+
+    image: NDArray[np.uint8]
+    rim: Ellipse | None
+    candidates: list[Candidate]
 
 
 class Track(NamedTuple):
@@ -57,13 +66,17 @@ class Track(NamedTuple):
         The mark's image (u, v) in px for every frame (nan where not found).
     rim : Ellipse
     first_frame : numpy.ndarray
-        The first frame (grey), for drawing.
+        The first frame (RGB), for drawing.
     mirrored : bool
         Whether y was mirrored (the platter turns clockwise seen from above).
     times : numpy.ndarray
         Time of every frame, s from the first.
     ball_radius, platter_radius : float
         R and P, m.
+    checks : dict
+        Every check of `turntable.video.check` (all passed), with its value and limit.
+    candidates : list of Candidate
+        What was found on the first frame, the ball and the mark among it.
     """
 
     film: Film
@@ -78,6 +91,8 @@ class Track(NamedTuple):
     times: NDArray[np.float64]
     ball_radius: float
     platter_radius: float
+    checks: dict[str, dict[str, Any]]
+    candidates: list[Candidate]
 
 
 def frame_ranges(frames: list[int]) -> str:
@@ -92,107 +107,13 @@ def frame_ranges(frames: list[int]) -> str:
     return ", ".join(out)
 
 
-class _State:
-    """What is followed from frame to frame: the last position and the step per frame."""
-
-    def __init__(self) -> None:
-        self.last: NDArray | None = None
-        self.step: NDArray | None = None
-        self.misses = 0
-
-    def predict(self) -> NDArray:
-        assert self.last is not None
-        if self.step is None:
-            return self.last
-        return self.last + (self.misses + 1) * self.step
-
-    def speed(self) -> float | None:
-        """Px per frame, once known."""
-        return None if self.step is None else float(np.hypot(*self.step))
-
-    def found(self, uv: NDArray) -> None:
-        if self.last is not None:
-            self.step = (uv - self.last) / (self.misses + 1)
-        self.last, self.misses = uv, 0
-
-    def miss(self) -> None:
-        self.misses += 1
-
-
-class _Turning(_State):
-    """The mark: followed in angle about the rim's centre, in the frame where the rim is a
-    circle, so that a prediction across misses stays on the mark's path."""
-
-    def __init__(self, rim: Ellipse) -> None:
-        super().__init__()
-        self.rim = rim
-        c, s = math.cos(rim.angle), math.sin(rim.angle)
-        self.to_circle = np.array([[c / rim.a, s / rim.a], [-s / rim.b, c / rim.b]])
-        self.turn = 0.0
-
-    def _polar(self, uv: NDArray) -> tuple[float, float]:
-        p = self.to_circle @ (uv - self.rim.centre)
-        return math.atan2(p[1], p[0]), math.hypot(p[0], p[1])
-
-    def predict(self) -> NDArray:
-        assert self.last is not None
-        if self.step is None:
-            return self.last
-        angle, radius = self._polar(self.last)
-        angle += (self.misses + 1) * self.turn
-        p = radius * np.array([math.cos(angle), math.sin(angle)])
-        return np.linalg.solve(self.to_circle, p) + self.rim.centre
-
-    def found(self, uv: NDArray) -> None:
-        if self.last is not None:
-            step = self._polar(uv)[0] - self._polar(self.last)[0]
-            self.turn = (step + math.pi) % (2 * math.pi) - math.pi
-            self.turn /= self.misses + 1
-        super().found(uv)
-
-
-def _pick(found: list[Blob], near: NDArray, area: float) -> Blob | None:
-    ok = [b for b in found if 0.25 * area < b.area < 4.0 * area]
-    if not ok:
-        return None
-    return min(
-        ok,
-        key=lambda b: math.hypot(b.u - near[0], b.v - near[1]) + 3 * abs(math.log(b.area / area)),
-    )
-
-
-def _first(img, rim, platter_level, spread, allowed, ball_area) -> tuple[Blob, float, Blob]:
-    """Ball and mark on the first frame, with the sign of the ball's contrast."""
-    full = (slice(0, img.shape[0]), slice(0, img.shape[1]))
-    threshold = max(CONTRAST_SPREAD * spread, MIN_CONTRAST)
-    found = [
-        (s, b) for s in (1.0, -1.0) for b in blobs(img, full, platter_level, s, threshold, allowed)
-    ]
-    candidates = [(s, b) for s, b in found if 0.5 * ball_area < b.area < 2.0 * ball_area]
-    if not candidates:
-        raise VideoError(
-            f"no ball found on the first frame: no blob of about {ball_area:.0f} px (a ball of "
-            f"the given radius) differs from the platter by {threshold:.0f} grey levels or more"
-        )
-    sign, ball = min(candidates, key=lambda sb: abs(math.log(sb[1].area / ball_area)))
-    others = [
-        b
-        for s, b in found
-        if b is not ball and b.area >= 4 and 0.6 < rim.radius(np.array([[b.u, b.v]]))[0] < 0.98
-    ]
-    if not others:
-        raise VideoError(
-            "no mark found on the platter: put a small mark of another size than the ball "
-            "near the rim, in contrast with the platter"
-        )
-    return ball, sign, max(others, key=lambda b: b.area)
-
-
 def track_video(
     path: str | os.PathLike[str],
     ball_radius: float,
     platter_radius: float,
     rpm: float | None = None,
+    ball_at: tuple[float, float] | None = None,
+    mark_at: tuple[float, float] | None = None,
 ) -> tuple[Track, list[str]]:
     """Track the ball of a video; return the track and the warnings (one line each).
 
@@ -203,8 +124,10 @@ def track_video(
     ball_radius, platter_radius : float
         R and P, m.
     rpm : float, optional
-        The platter's rate as given, checked against the one measured (a warning if they
+        The platter's rate as given: the mark must turn within 1 % of it (a warning if they
         differ by more than 4 standard errors and 0.1 %).
+    ball_at, mark_at : tuple of float, optional
+        Seeds: a pixel (u, v) of the first frame on the ball, and on the mark.
 
     Returns
     -------
@@ -216,7 +139,8 @@ def track_video(
     VideoError
         A video that cannot be read or has no frame, no platter, no ball or no mark on its
         first frame, a ball that reaches the platter's rim or the image's edge, a mark lost
-        in nearly every frame.
+        in nearly every frame, a failed check (`turntable.video.check`).  Its ``found`` is
+        the `FirstLook`, for drawing.
 
     Examples
     --------
@@ -239,147 +163,88 @@ def track_video(
     31 frames, Omega 4.711 rad/s, rms error 0.01 R
     """
     with Video(path) as video:
-        return _track(video, ball_radius, platter_radius, rpm)
+        try:
+            return _track(video, ball_radius, platter_radius, rpm, ball_at, mark_at)
+        except VideoError as exc:
+            message = str(exc)
+            if not message.startswith(video.info.path):
+                message = f"{video.info.path}: {message}"
+            raise VideoError(message, exc.found) from None
 
 
-def _track(video: Video, ball_radius: float, platter_radius: float, rpm: float | None):
+def _track(video, ball_radius, platter_radius, rpm, ball_at, mark_at):
     info = video.info
-    name = info.path
-    times: list[float] = []
-    ball_uv: list[tuple[float, float]] = []
-    mark_uv: list[tuple[float, float]] = []
-    rim_pts: list[NDArray] = []
-    every = max(info.frames // RIM_FRAMES, 1) if info.frames else 30
-    ball: _State = _State()
-    mark: _State = _State()
-    for index, t, img in video.frames():
-        if index == 0:
-            first = img.copy()
-            rim0 = find_platter(img)
-            if rim0 is None:
-                raise VideoError(
-                    f"{name}: no platter found on the first frame: no elliptic region in "
-                    "contrast with its surroundings lies wholly inside the image"
-                )
-            platter_level, outside = levels(img, rim0)
-            rim, pts = refine_rim(img, rim0, (platter_level + outside) / 2)
-            inner = rim.mask(img.shape, 0.9)
-            spread = 1.4826 * float(np.median(np.abs(img[inner] - platter_level)))
-            allowed = rim.mask(img.shape, 1.0 - 3.0 / rim.b)
-            r_px = ball_radius / platter_radius * rim.a
-            ball_area = math.pi * r_px**2
-            b0, sign, m0 = _first(img, rim, platter_level, spread, allowed, ball_area)
-            threshold = max(CONTRAST_SPREAD * spread, MIN_CONTRAST)
-            mark_sign = sign if b0.area else 1.0
-            mark_area, ball_area = m0.area, b0.area
-            r_mark = math.sqrt(mark_area / math.pi)
-            mark_step = (
-                (rpm / 60 * 2 * math.pi if rpm else 8.0) * rim.a * 0.95 / (info.rate or 30.0)
-            )
-            mark = _Turning(rim)
-        times.append(t)
-        if index % every == 0 and index:
-            rim_pts.append(_rim_points(img, rim, platter_level, outside))
-        elif index == 0:
-            rim_pts.append(pts)
-        # the ball
-        if index == 0:
-            found: Blob | None = b0
-        else:
-            near = ball.predict()
-            v = ball.speed()
-            half = 2.5 * r_px + 4 + (ball.misses + 1) * (0 if v is None else v + 2 * r_px)
-            box = window(tuple(near), half, img.shape)
-            found = _pick(blobs(img, box, platter_level, sign, threshold, allowed), near, ball_area)
-        if found is not None and found.touches:
-            where = (
-                "the platter's rim" if _inside_image(found, img.shape, r_px) else "the image's edge"
-            )
-            raise VideoError(
-                f"{name}: the ball reaches {where} at frame {index} (t = {t:.3f} s): cut the "
-                "video before it does"
-            )
-        # the mark, unless it passes so close to the ball that their images may touch:
-        # then neither is measured on this frame
-        m: Blob | None = m0
-        if index:
-            near = mark.predict()
-            v = mark.speed()
-            half = 3 * r_mark + 4 + (mark_step if v is None else v + 2) * (mark.misses + 1)
-            m = None
-            if found is not None and math.hypot(found.u - near[0], found.v - near[1]) < (
-                r_px + r_mark + 4
-            ):
-                found = None
-            else:
-                box = window(tuple(near), half, img.shape)
-                candidates = [
-                    b
-                    for b in blobs(img, box, platter_level, mark_sign, threshold, allowed)
-                    if found is None or math.hypot(b.u - found.u, b.v - found.v) > r_px
-                ]
-                m = _pick(candidates, near, mark_area)
-        if found is None:
-            ball.miss()
-            ball_uv.append((math.nan, math.nan))
-        else:
-            ball.found(np.array([found.u, found.v]))
-            ball_uv.append((found.u, found.v))
-        if m is None:
-            mark.miss()
-            mark_uv.append((math.nan, math.nan))
-        else:
-            mark.found(np.array([m.u, m.v]))
-            mark_uv.append((m.u, m.v))
-    if not times:
-        raise VideoError(f"{name}: the video has no frame")
-    return _finish(
-        info,
-        np.array(times),
-        np.array(ball_uv),
-        np.array(mark_uv),
-        rim_pts,
-        rim,
-        first,
-        ball_radius,
-        platter_radius,
-        rpm,
-    )
-
-
-def _inside_image(b: Blob, shape: tuple[int, int], r_px: float) -> bool:
-    m = 1.5 * r_px + 2
-    return m < b.u < shape[1] - 1 - m and m < b.v < shape[0] - 1 - m
-
-
-def _rim_points(img, rim, platter_level, outside) -> NDArray:
-    from turntable.video.detect import rim_points
-
-    pts = rim_points(img, rim, (platter_level + outside) / 2)
-    dev = (rim.radius(pts) - 1.0) * rim.b
-    return pts[np.abs(dev) < 1.5]
-
-
-def _finish(info, t, ball_uv, mark_uv, rim_pts, rim, first, ball_radius, platter_radius, rpm):
-    t0 = t[0]
-    t = t - t0
-    ok_mark = np.isfinite(mark_uv[:, 0])
+    frames = video.frames()
+    first = next(frames, None)
+    if first is None:
+        raise VideoError("the video has no frame")
+    lab0 = lab(first[2])
+    image = rgb(first[2])
+    got = find_platter(lab0)
+    if got is None or got[0].contrast < MIN_RIM_CONTRAST:
+        raise VideoError(
+            "no platter found on the first frame: no elliptic region in contrast with its "
+            "surroundings lies wholly inside the image",
+            FirstLook(image, None, []),
+        )
+    platter, rim_pts = got
+    size = (info.width, info.height)
+    pose0 = rim_camera(rim_pts, platter.rim, size, platter_radius)
+    probe: list[tuple[int, float, Picture]] = [(first[0], first[1], first[2].copy())]
+    for index, t, picture in frames:
+        probe.append((index, t, picture.copy()))
+        enough = len(probe) >= PROBE_FRAMES and t - probe[0][1] >= PROBE_SECONDS
+        if enough or len(probe) >= 120:
+            break
+    try:
+        found = find(
+            [(t, p) for _, t, p in probe],
+            platter,
+            pose0,
+            ball_radius,
+            platter_radius,
+            ball_at,
+            mark_at,
+            rpm,
+        )
+    except VideoError as exc:
+        raise VideoError(str(exc), FirstLook(image, platter.rim, exc.found or [])) from None
+    look = FirstLook(image, platter.rim, found.candidates)
+    mark_step = (rpm / 60 * 2 * math.pi if rpm else 8.0) * platter.rim.a / (info.rate or 30.0)
+    try:
+        paths = follow(
+            itertools.chain(probe, frames), info.frames, platter, rim_pts, found, mark_step
+        )
+    except VideoError as exc:
+        raise VideoError(str(exc), look) from None
+    ok_mark = np.isfinite(paths.mark[:, 0])
     if ok_mark.sum() < MIN_MARK_FRAMES:
         raise VideoError(
-            f"{info.path}: the mark was found on {int(ok_mark.sum())} frames only (at least "
-            f"{MIN_MARK_FRAMES} are needed to measure the platter's rate)"
+            f"the mark was found on {int(ok_mark.sum())} frames only (at least "
+            f"{MIN_MARK_FRAMES} are needed to measure the platter's rate)",
+            look,
         )
+    t = paths.t - paths.t[0]
     cal = calibrate(
-        np.vstack(rim_pts),
-        rim,
+        paths.rim_points,
+        platter.rim,
         t[ok_mark],
-        mark_uv[ok_mark],
-        (info.width, info.height),
+        paths.mark[ok_mark],
+        size,
         platter_radius,
-        len(rim_pts),
+        paths.rim_frames,
     )
-    ok = np.isfinite(ball_uv[:, 0])
-    xy = camera.sphere_centre(cal.pose, ball_uv[ok], ball_radius)
+    results = checks(cal, paths, found, platter.rim, pose0, ball_radius, platter_radius, rpm)
+    failure = first_failure(results)
+    if failure is not None:
+        raise VideoError(failure, look)
+    return _finish(info, paths, cal, results, look, ball_radius, platter_radius, rpm)
+
+
+def _finish(info, paths: Paths, cal, results, look, ball_radius, platter_radius, rpm):
+    t = paths.t - paths.t[0]
+    ok = np.isfinite(paths.ball[:, 0])
+    xy = camera.sphere_centre(cal.pose, paths.ball[ok], ball_radius)
     mirrored = cal.omega < 0
     if mirrored:
         xy[:, 1] *= -1
@@ -388,8 +253,7 @@ def _finish(info, t, ball_uv, mark_uv, rim_pts, rim, first, ball_radius, platter
     if lost:
         warnings.append(
             f"the ball was not found, or was next to the mark, on {len(lost)} of {t.size} frames "
-            f"({frame_ranges(lost)}): "
-            "they are gaps of the film"
+            f"({frame_ranges(lost)}): they are gaps of the film"
         )
     omega = abs(cal.omega)
     if rpm is not None:
@@ -407,14 +271,16 @@ def _finish(info, t, ball_uv, mark_uv, rim_pts, rim, first, ball_radius, platter
         cal,
         info,
         lost,
-        ball_uv,
-        mark_uv,
-        rim,
-        first,
+        paths.ball,
+        paths.mark,
+        look.rim,
+        look.image,
         mirrored,
         t,
         ball_radius,
         platter_radius,
+        results,
+        look.candidates,
     )
     return track, warnings
 
@@ -454,6 +320,7 @@ def calibration_json(track: Track, ball_radius: float, platter_radius: float) ->
             "semi_axes": [track.rim.a, track.rim.b],
             "angle_rad": track.rim.angle,
         },
+        "checks": track.checks,
         "frame_times_s": [float(v) for v in track.times],
         "lost_frames": track.lost,
         "units": {
@@ -483,4 +350,5 @@ def video_summary(track: Track, given_omega: bool) -> dict[str, Any]:
         "clockwise_from_above": track.mirrored,
         "camera": dict(cal.derived),
         "camera_stderr": dict(cal.stderr),
+        "checks": {name: bool(r["passed"]) for name, r in track.checks.items()},
     }

@@ -1,0 +1,156 @@
+"""Stage 6, checks: a track that contradicts itself is refused before anything is written.
+
+Each check compares two things the video says independently; `checks` returns every one,
+with its value and its limit, and `first_failure` the line that names the first that failed
+and the option that would help.
+
+- ``rate``: the mark turns at a rate a platter can have (`RATE_RANGE`), or within 1 % of
+  ``--rpm``;
+- ``mark_on_circle``: the mark's images lie on the fitted camera's circle, turning steadily
+  (rms within `MARK_RMS_PX` px or half the mark's size);
+- ``axis``: the centre of the mark's circle, seen through the camera the rim alone gives, is
+  the rim's centre (within 3 % of P);
+- ``tilt``: the mark's circle and the rim are seen under the same tilt (their images' axis
+  ratios within 0.03; when the mark has covered half a turn);
+- ``ball_moves``: the ball moves relative to the platter (the spread of its path in the
+  platter's frame at least R / 2), not rigidly with it;
+- ``ball_size``: the ball's image is the size that R and the fitted camera predict (within
+  a factor 0.7-1.4 in radius).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from turntable.video import camera
+from turntable.video.calibrate import Calibration
+from turntable.video.camera import Pose
+from turntable.video.find import RATE_RANGE, Found
+from turntable.video.follow import Paths
+from turntable.video.platter import Ellipse, fit_ellipse
+
+#: The mark's images within this many px (rms) of the fitted circle, or half its size.
+MARK_RMS_PX = 2.0
+#: What each check says when it fails, and the option that helps.
+HELP = {
+    "rate": "it may not be the mark: give --mark-at U,V (or check --rpm)",
+    "mark_on_circle": "it may not be the mark: give --mark-at U,V",
+    "axis": "it may not be the mark: give --mark-at U,V",
+    "tilt": "it may not be the mark: give --mark-at U,V",
+    "ball_moves": "it may be a mark or a label, not the ball: give --ball-at U,V",
+    "ball_size": "check --ball-radius and --platter-radius, or give --ball-at U,V",
+}
+
+
+def _circle_centre(xy: np.ndarray) -> np.ndarray:
+    """Centre of the least-squares circle through points (Kasa's algebraic fit)."""
+    a = np.c_[2 * xy, np.ones(len(xy))]
+    sol = np.linalg.lstsq(a, (xy**2).sum(axis=1), rcond=None)[0]
+    return sol[:2]
+
+
+def checks(
+    cal: Calibration,
+    paths: Paths,
+    found: Found,
+    rim: Ellipse,
+    rim_pose: Pose,
+    ball_radius: float,
+    platter_radius: float,
+    rpm: float | None,
+) -> dict[str, dict[str, Any]]:
+    """Every check: {name: {"value", "limit", "passed", "says"}}."""
+    out: dict[str, dict[str, Any]] = {}
+    t = paths.t - paths.t[0]
+
+    def put(name: str, value: float, limit: Any, passed: bool, says: str) -> None:
+        out[name] = {"value": value, "limit": limit, "passed": bool(passed), "says": says}
+
+    rate = abs(cal.omega)
+    rpm_seen = rate * 30 / math.pi
+    if rpm is None:
+        put(
+            "rate",
+            rate,
+            list(RATE_RANGE),
+            RATE_RANGE[0] <= rate <= RATE_RANGE[1],
+            f"the mark turns at {rpm_seen:.3g} rpm, not a rate a platter has",
+        )
+    else:
+        off = rate / (rpm * math.pi / 30) - 1
+        put(
+            "rate",
+            off,
+            0.01,
+            abs(off) <= 0.01,
+            f"the mark turns at {rpm_seen:.4g} rpm, not at the given --rpm {rpm:g}",
+        )
+    r_mark = math.sqrt(found.mark.area / math.pi)
+    limit = max(MARK_RMS_PX, 0.5 * r_mark)
+    put(
+        "mark_on_circle",
+        cal.mark_rms_px,
+        limit,
+        cal.mark_rms_px <= limit,
+        f"the mark's images are {cal.mark_rms_px:.2g} px (rms) off a circle turning steadily",
+    )
+    ok = np.isfinite(paths.mark[:, 0])
+    q = camera.back_project(rim_pose, paths.mark[ok])
+    off = float(np.hypot(*_circle_centre(q))) / platter_radius
+    put(
+        "axis",
+        off,
+        0.03,
+        off <= 0.03,
+        f"the mark's circle is centred {off:.2g} P from the rim's centre",
+    )
+    span = rate * float(np.ptp(t[ok])) if ok.sum() > 1 else 0.0
+    if span >= math.pi and ok.sum() >= 10:
+        e = fit_ellipse(paths.mark[ok])
+        diff = abs(e.b / e.a - rim.b / rim.a)
+        tilts = [math.degrees(math.acos(min(x, 1.0))) for x in (rim.b / rim.a, e.b / e.a)]
+        put(
+            "tilt",
+            diff,
+            0.03,
+            diff <= 0.03,
+            f"the rim is seen tilted by {tilts[0]:.1f} deg, the mark's circle by "
+            f"{tilts[1]:.1f} deg",
+        )
+    seen = np.isfinite(paths.ball[:, 0])
+    xy = camera.sphere_centre(cal.pose, paths.ball[seen], ball_radius)
+    z = (xy[:, 0] + 1j * xy[:, 1]) * np.exp(-1j * cal.omega * t[seen])
+    spread = float(np.sqrt(np.mean(np.abs(z - z.mean()) ** 2))) / ball_radius
+    put(
+        "ball_moves",
+        spread,
+        0.5,
+        spread >= 0.5,
+        f"the ball's path in the platter's frame spreads over {spread:.2g} R only: it turns "
+        "with the platter",
+    )
+    centres = np.c_[xy, np.full(len(xy), ball_radius)]
+    depth = np.linalg.norm(centres - camera.centre(cal.pose), axis=1)
+    predicted = float(np.median(cal.pose.focal * ball_radius / depth))
+    measured = math.sqrt(float(np.nanmedian(paths.ball_area)) / math.pi)
+    ratio = measured / predicted
+    put(
+        "ball_size",
+        ratio,
+        [0.7, 1.4],
+        0.7 <= ratio <= 1.4,
+        f"the ball's image is {2 * measured:.3g} px across, a ball of the given radius there "
+        f"would be {2 * predicted:.3g} px",
+    )
+    return out
+
+
+def first_failure(results: dict[str, dict[str, Any]]) -> str | None:
+    """One line naming the first check that failed and what would help; None if none."""
+    for name, r in results.items():
+        if not r["passed"]:
+            return f"{r['says']}: {HELP[name]}"
+    return None

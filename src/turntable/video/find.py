@@ -1,0 +1,311 @@
+"""Stage 3, finding the ball and the mark on the first frames.
+
+Everything on the platter whose colour differs from the platter's by more than its grain
+(CIELAB distance above `CONTRAST_NOISE` times the platter's median one, and at least
+`MIN_CONTRAST`) is a candidate, bright or dark, of any hue.  Each candidate is followed over
+the first `PROBE_SECONDS` of the video and its path seen on the platter's plane through the
+camera that the rim alone gives.  What tells them apart is how they move:
+
+- the **mark** turns rigidly with the platter: on a circle about the axis, at least
+  `MARK_MIN_RADIUS` of P from it, at a constant rate that a platter can have (`RATE_RANGE`,
+  or within 5 % of ``--rpm``); of several, the one nearest the rim;
+- the **ball** does not; it is round and of the size that R and the rim's scale predict; of
+  several, the one that differs most from the platter (not its shadow).
+
+Two candidates that could each be the ball are refused, as is a scene with no mark: the seeds
+``--ball-at U,V`` and ``--mark-at U,V`` (pixels of the first frame) then say which is which.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import NDArray
+
+from turntable.video import camera
+from turntable.video.blobs import Colour
+from turntable.video.camera import Pose
+from turntable.video.decode import Picture, VideoError, lab, window
+from turntable.video.platter import Platter
+
+try:
+    import cv2
+except ImportError:  # without the extra [video]
+    cv2 = None
+
+#: A candidate differs from the platter by this many times the platter's median distance
+#: from its own colour, and by at least `MIN_CONTRAST` (CIELAB units).
+CONTRAST_NOISE, MIN_CONTRAST = 5.0, 10.0
+#: Candidates are followed over this long (s), at least `PROBE_FRAMES` frames.
+PROBE_SECONDS, PROBE_FRAMES = 0.3, 10
+#: A mark is at least this far from the axis, in units of P.
+MARK_MIN_RADIUS = 0.45
+#: Rates a platter can turn at, rad/s (3 to 115 rpm).
+RATE_RANGE = (0.3, 12.0)
+#: The ball's image area within these factors of a ball of radius R's, its axis ratio below
+#: `MAX_ELONGATION`.
+AREA_RANGE, MAX_ELONGATION = (0.35, 2.8), 1.6
+SEED_HINT = "give the first frame's pixel with --ball-at U,V and --mark-at U,V"
+
+
+class Candidate(NamedTuple):
+    """Something on the platter on the first frame, and what its motion says it is."""
+
+    u: float
+    v: float
+    area: float
+    colour: NDArray[np.float64]
+    contrast: float
+    elongation: float
+    #: distance from the axis in units of P if it turns rigidly with the platter, else nan
+    turns_at: float = math.nan
+    kind: str = "other"  # "ball", "mark", "other"
+
+
+class Found(NamedTuple):
+    """The ball and the mark on the first frame, with the colour each is followed by."""
+
+    ball: Candidate
+    mark: Candidate
+    ball_colour: Colour
+    mark_colour: Colour
+    candidates: list[Candidate]
+
+
+class _Path:
+    """A candidate followed over the probe's frames."""
+
+    def __init__(self, c: Candidate) -> None:
+        self.c = c
+        self.t: list[float] = []
+        self.uv: list[tuple[float, float]] = []
+
+    def predict(self, t: float) -> NDArray:
+        """Where it is at time t, if it goes on as in its last step."""
+        if len(self.uv) < 2:
+            return np.array(self.uv[-1])
+        (u0, v0), (u1, v1) = self.uv[-2:]
+        t0, t1 = self.t[len(self.uv) - 2], self.t[len(self.uv) - 1]
+        return np.array([u1, v1]) + (np.array([u1 - u0, v1 - v0])) * (t - t1) / (t1 - t0)
+
+
+def _components(lab_img, platter: Platter, allowed, threshold):
+    """Components of the pixels farther from the platter's colour than ``threshold``."""
+    dist = np.linalg.norm(lab_img - platter.colour.astype(np.float32), axis=-1)
+    mask = ((dist > threshold) & allowed).astype(np.uint8)
+    _, labels, stats, centroids = cv2.connectedComponentsWithStats(mask, connectivity=8)
+    return dist, labels, stats[1:], centroids[1:]
+
+
+def _shape(region: NDArray[np.uint8]) -> float:
+    """Axis ratio of a region, from its second moments."""
+    m = cv2.moments(region, binaryImage=True)
+    if m["m00"] < 3:
+        return 1.0
+    a, b, c = m["mu20"] / m["m00"], m["mu11"] / m["m00"], m["mu02"] / m["m00"]
+    root = math.sqrt(max((a - c) ** 2 + 4 * b * b, 0.0))
+    lo, hi = (a + c - root) / 2, (a + c + root) / 2
+    return math.sqrt(hi / max(lo, 1e-9))
+
+
+def find(
+    probe: list[tuple[float, Picture]],
+    platter: Platter,
+    pose: Pose,
+    ball_radius: float,
+    platter_radius: float,
+    ball_at: tuple[float, float] | None = None,
+    mark_at: tuple[float, float] | None = None,
+    rpm: float | None = None,
+) -> Found:
+    """The ball and the mark (see the module's docstring).
+
+    Parameters
+    ----------
+    probe : list of (float, Picture)
+        The first frames and their times (s).
+    platter : Platter
+    pose : Pose
+        The camera that the rim alone gives (for the candidates' paths on the plane).
+    ball_radius, platter_radius : float
+        R and P, m.
+    ball_at, mark_at : tuple of float, optional
+        Seeds: pixels (u, v) of the first frame on or next to the ball and the mark.
+    rpm : float, optional
+        The platter's rate as given.
+
+    Raises
+    ------
+    VideoError
+        No ball, two possible balls, no mark, or a seed with nothing there; its ``found``
+        holds the candidates.
+    """
+    rim = platter.rim
+    shape = probe[0][1].shape
+    allowed = rim.mask(shape, 1.0 - 3.0 / rim.b)
+    box = window(rim.centre, rim.a + 3, shape)
+    origin = np.array([box[1].start, box[0].start], float)
+    lab0 = lab(probe[0][1], box)
+    ring = (rim.mask(shape, 0.9) & ~rim.mask(shape, 0.35))[box]
+    noise = float(np.median(np.linalg.norm(lab0[ring] - platter.colour.astype(np.float32), axis=1)))
+    threshold = max(CONTRAST_NOISE * noise, MIN_CONTRAST)
+    _, labels, stats, centroids = _components(lab0, platter, allowed[box], threshold)
+    paths = []
+    order = np.argsort(-stats[:, 4])[:40]
+    for i in order:
+        x, y, w, h, area = stats[i]
+        if area < 3:
+            continue
+        region = (labels[y : y + h, x : x + w] == i + 1).astype(np.uint8)
+        pix = lab0[y : y + h, x : x + w][region.astype(bool)]
+        colour = np.median(pix, axis=0).astype(float)
+        uv = centroids[i] + origin
+        contrast = float(np.linalg.norm(colour - platter.colour))
+        c = Candidate(float(uv[0]), float(uv[1]), float(area), colour, contrast, _shape(region))
+        p = _Path(c)
+        p.t.append(probe[0][0])
+        p.uv.append((c.u, c.v))
+        paths.append(p)
+    for t, picture in probe[1:]:
+        _, _, st, cen = _components(lab(picture, box), platter, allowed[box], threshold)
+        cen = cen + origin
+        for p in paths:
+            if len(p.uv) < len(p.t):
+                continue  # lost: not followed further
+            near = p.predict(t)
+            step = float(np.hypot(*(near - p.uv[-1])))
+            if len(p.uv) == 1:  # as far as the fastest platter would take it
+                arm = float(np.hypot(p.c.u - rim.centre[0], p.c.v - rim.centre[1]))
+                step = RATE_RANGE[1] * arm * (t - p.t[0])
+            gate = 3.0 + 1.5 * math.sqrt(p.c.area / math.pi) + step
+            d = np.hypot(cen[:, 0] - near[0], cen[:, 1] - near[1])
+            ok = (d < gate) & (st[:, 4] > 0.3 * p.c.area) & (st[:, 4] < 3.3 * p.c.area)
+            if ok.any():
+                j = int(np.argmin(np.where(ok, d, np.inf)))
+                p.uv.append((float(cen[j, 0]), float(cen[j, 1])))
+            p.t.append(t)
+    planes = [_on_plane(p, len(probe), pose) for p in paths]
+    candidates = [p.c for p in paths]
+    tolerance = max(0.15 * ball_radius, 1.5 * platter_radius / rim.a)
+    marks = []
+    for i, plane in enumerate(planes):
+        if plane is None:
+            continue
+        rate, centre, residual = _turning(*plane)
+        ok = RATE_RANGE[0] <= abs(rate) <= RATE_RANGE[1]
+        if rpm is not None:
+            ok = abs(abs(rate) / (rpm * math.pi / 30) - 1) < 0.05
+        if residual < tolerance and ok and abs(centre) > 0.05 * platter_radius:
+            candidates[i] = candidates[i]._replace(turns_at=abs(centre) / platter_radius)
+            marks.append((i, rate))
+    if mark_at is not None:
+        m = _near(candidates, mark_at, "--mark-at")
+        marks = [(m, dict(marks).get(m))]
+    else:
+        marks = sorted(
+            ((i, w) for i, w in marks if candidates[i].turns_at >= MARK_MIN_RADIUS),
+            key=lambda iw: -candidates[iw[0]].turns_at,
+        )
+    if not marks:
+        raise VideoError(
+            "no mark found on the platter: nothing near the rim turns with it at a rate a "
+            f"platter can have; put a small mark near the rim, in contrast with the platter, or "
+            f"{SEED_HINT}",
+            candidates,
+        )
+    for m, rate in marks:
+        # the ball does not turn with the platter: not rigidly at the mark's rate
+        rigid = [
+            rate is not None and planes[i] is not None and _turning(*planes[i], rate)[2] < tolerance
+            for i in range(len(candidates))
+        ]
+        others = [c if i != m and not rigid[i] else None for i, c in enumerate(candidates)]
+        ball = _choose_ball(others, pose, ball_radius, ball_at, found_mark=len(marks) > 1)
+        if ball is not None:
+            break
+    if ball is None:
+        centre = Candidate(*pose.principal, 0.0, np.zeros(3), 0.0, 1.0)
+        expected = _expected_area(pose, centre, ball_radius)
+        raise VideoError(
+            f"no ball found on the first frame: nothing round of about {expected:.0f} px (a ball "
+            "of the given radius at the rim's scale) differs from the platter and moves on its "
+            f"own; {SEED_HINT}",
+            candidates,
+        )
+    candidates[ball] = candidates[ball]._replace(kind="ball")
+    candidates[m] = candidates[m]._replace(kind="mark")
+    return Found(
+        candidates[ball],
+        candidates[m],
+        Colour(candidates[ball].colour, platter.colour),
+        Colour(candidates[m].colour, platter.colour),
+        candidates,
+    )
+
+
+def _on_plane(p: _Path, frames: int, pose: Pose) -> tuple[NDArray, NDArray] | None:
+    """A candidate's times and positions on the platter's plane (x + i y), if it was followed
+    over most of the probe."""
+    if len(p.uv) < max(0.6 * frames, 3):
+        return None
+    q = camera.back_project(pose, np.array(p.uv))
+    return np.array(p.t[: len(p.uv)]), q[:, 0] + 1j * q[:, 1]
+
+
+def _turning(t: NDArray, z: NDArray, rate: float | None = None) -> tuple[float, complex, float]:
+    """The uniform turning about the axis nearest a path: its rate (fitted unless given), the
+    position at t = 0 and the rms distance of the path from it."""
+    if rate is None:
+        rate = float(np.polyfit(t, np.unwrap(np.angle(z)), 1)[0])
+    c = complex(np.mean(z * np.exp(-1j * rate * t)))
+    return rate, c, float(np.sqrt(np.mean(np.abs(z - c * np.exp(1j * rate * t)) ** 2)))
+
+
+def _expected_area(pose: Pose, c: Candidate, ball_radius: float) -> float:
+    xy = camera.back_project(pose, [[c.u, c.v]], height=ball_radius)[0]
+    depth = float(np.linalg.norm(np.r_[xy, ball_radius] - camera.centre(pose)))
+    return math.pi * (pose.focal * ball_radius / depth) ** 2
+
+
+def _near(candidates: list[Candidate | None], at: tuple[float, float], option: str) -> int:
+    """The candidate whose outline is within 10 px of a seed."""
+    d = [
+        math.hypot(c.u - at[0], c.v - at[1]) - math.sqrt(c.area / math.pi)
+        if c is not None and c.kind == "other"
+        else math.inf
+        for c in candidates
+    ]
+    if not candidates or min(d) > 10.0:
+        raise VideoError(
+            f"{option} {at[0]:g},{at[1]:g}: nothing there differs from the platter (no candidate "
+            "within 10 px); --plot shows the candidates",
+            [c for c in candidates if c is not None],
+        )
+    return int(np.argmin(d))
+
+
+def _choose_ball(others, pose, ball_radius, ball_at, found_mark) -> int | None:
+    """The ball among the candidates that do not turn with the platter (None elsewhere)."""
+    if ball_at is not None:
+        return _near(others, ball_at, "--ball-at")
+    ok = [
+        i
+        for i, c in enumerate(others)
+        if c is not None
+        and AREA_RANGE[0] < c.area / _expected_area(pose, c, ball_radius) < AREA_RANGE[1]
+        and c.elongation < MAX_ELONGATION
+    ]
+    if not ok:
+        return None
+    ok.sort(key=lambda i: -others[i].contrast)
+    if len(ok) > 1:
+        a, b = others[ok[0]], others[ok[1]]
+        if b.contrast > 0.8 * a.contrast and b.area > 0.6 * a.area:
+            raise VideoError(
+                f"two things could be the ball, at ({a.u:.0f}, {a.v:.0f}) and ({b.u:.0f}, "
+                f"{b.v:.0f}) px: give the ball's pixel of the first frame with --ball-at U,V",
+                [c for c in others if c is not None],
+            )
+    return ok[0]

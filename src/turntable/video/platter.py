@@ -1,0 +1,193 @@
+"""Stage 2, the platter: its rim (an ellipse in the image) and its colour.
+
+The platter is the largest region of the first frame that lies wholly in the image and is an
+ellipse: Otsu's threshold on each CIELAB channel in turn (so that a grey platter on a table
+of another hue is found as well as a dark one on a light table), connected components, and
+`cv2.fitEllipseDirect` on each outline, kept if its area is within 5 % of the ellipse's.  The
+rim is then refined to a fraction of a pixel: the crossing, along each normal of the ellipse,
+of the half-way level between the platter and its surroundings, measured along the line
+between their colours.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import NDArray
+
+try:
+    import cv2
+except ImportError:  # without the extra [video]: the module imports, its functions do not run
+    cv2 = None
+
+
+class Ellipse(NamedTuple):
+    """Centre (px), semi-axes a >= b (px), angle of the major axis from u towards v (rad)."""
+
+    centre: tuple[float, float]
+    a: float
+    b: float
+    angle: float
+
+    def radius(self, points: NDArray[np.float64]) -> NDArray[np.float64]:
+        """The normalised radius of points: 1 on the ellipse, 0 at its centre."""
+        d = np.asarray(points, float).reshape(-1, 2) - self.centre
+        c, s = math.cos(self.angle), math.sin(self.angle)
+        return np.hypot((d[:, 0] * c + d[:, 1] * s) / self.a, (-d[:, 0] * s + d[:, 1] * c) / self.b)
+
+    def mask(self, shape: tuple[int, int], scale: float = 1.0) -> NDArray[np.bool_]:
+        """Pixels inside the ellipse scaled by ``scale`` about its centre."""
+        m = np.zeros(shape, np.uint8)
+        axes = (max(round(self.a * scale), 1), max(round(self.b * scale), 1))
+        centre = (round(self.centre[0]), round(self.centre[1]))
+        cv2.ellipse(m, centre, axes, math.degrees(self.angle), 0, 360, 1, -1)
+        return m.astype(bool)
+
+
+class Platter(NamedTuple):
+    """The rim, and the colours (CIELAB) of the platter and of what surrounds it.
+
+    ``level`` maps a CIELAB image to the scalar in which the rim is an edge: 0 outside, 1 on
+    the platter.
+    """
+
+    rim: Ellipse
+    colour: NDArray[np.float64]
+    outside: NDArray[np.float64]
+
+    @property
+    def contrast(self) -> float:
+        """CIELAB distance between the platter and its surroundings."""
+        return float(np.linalg.norm(self.colour - self.outside))
+
+    def level(self, lab: NDArray[np.float32]) -> NDArray[np.float32]:
+        d = (self.colour - self.outside) / self.contrast**2
+        return ((lab - self.outside.astype(np.float32)) @ d.astype(np.float32)).astype(np.float32)
+
+
+def fit_ellipse(points: NDArray[np.float64]) -> Ellipse:
+    """Least-squares ellipse through points (`cv2.fitEllipseDirect`)."""
+    (cx, cy), (w, h), deg = cv2.fitEllipseDirect(np.asarray(points, np.float32))
+    angle = math.radians(deg)
+    if h > w:
+        w, h, angle = h, w, angle + math.pi / 2
+    angle = (angle + math.pi / 2) % math.pi - math.pi / 2
+    return Ellipse((float(cx), float(cy)), w / 2.0, h / 2.0, angle)
+
+
+def find_rim(lab: NDArray[np.float32]) -> Ellipse | None:
+    """The platter's outline on a CIELAB image: the largest region, on either side of Otsu's
+    threshold of any channel, that lies wholly in the image and is an ellipse (its area within
+    5 % of the fitted ellipse's); None if none."""
+    height, width = lab.shape[:2]
+    best: tuple[float, Ellipse] | None = None
+    for channel in range(3):
+        img = cv2.normalize(lab[..., channel], None, 0, 255, cv2.NORM_MINMAX).astype(np.uint8)
+        blur = cv2.GaussianBlur(img, (0, 0), 2.0)
+        _, mask = cv2.threshold(blur, 0, 255, cv2.THRESH_BINARY + cv2.THRESH_OTSU)
+        for m in (mask, 255 - mask):
+            n, labels, stats, _ = cv2.connectedComponentsWithStats(m, connectivity=8)
+            for i in range(1, n):
+                x, y, w, h, area = stats[i]
+                if x == 0 or y == 0 or x + w >= width or y + h >= height:
+                    continue
+                if area < 0.02 * height * width or (best is not None and area < best[0]):
+                    continue
+                region = (labels[y : y + h, x : x + w] == i).astype(np.uint8)
+                contours, _ = cv2.findContours(region, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)
+                contour = max(contours, key=len)
+                if len(contour) < 20:
+                    continue
+                e = fit_ellipse(contour[:, 0, :].astype(float) + np.array([x, y]))
+                filled = cv2.contourArea(contour)
+                if abs(filled / (math.pi * e.a * e.b) - 1) < 0.05 and (
+                    best is None or filled > best[0]
+                ):
+                    best = (filled, e)
+    return None if best is None else best[1]
+
+
+def platter_colours(lab: NDArray[np.float32], rim: Ellipse) -> Platter:
+    """The median colours of the platter (between 0.35 and 0.9 of the rim: a label at its
+    centre left out) and of a ring just outside the rim."""
+    shape = lab.shape[:2]
+    inner = rim.mask(shape, 0.9) & ~rim.mask(shape, 0.35)
+    ring = rim.mask(shape, 1.15) & ~rim.mask(shape, 1.05)
+    if not ring.any():
+        ring = ~rim.mask(shape, 1.0)
+    return Platter(
+        rim, np.median(lab[inner], axis=0).astype(float), np.median(lab[ring], axis=0).astype(float)
+    )
+
+
+def rim_points(
+    level: NDArray[np.float32], rim: Ellipse, n: int = 360, reach: float = 6.0
+) -> NDArray[np.float64]:
+    """Points of the rim to a fraction of a pixel: where ``level`` (0 outside, 1 on the
+    platter) crosses 1/2 along the normal of ``rim`` at ``n`` angles (the crossing nearest the
+    ellipse)."""
+    s = np.linspace(0, 2 * math.pi, n, endpoint=False)
+    c, si = math.cos(rim.angle), math.sin(rim.angle)
+    u1, u2 = np.array([c, si]), np.array([-si, c])
+    on = (
+        np.array(rim.centre) + (rim.a * np.cos(s))[:, None] * u1 + (rim.b * np.sin(s))[:, None] * u2
+    )
+    normal = (rim.b * np.cos(s))[:, None] * u1 + (rim.a * np.sin(s))[:, None] * u2
+    normal /= np.linalg.norm(normal, axis=1, keepdims=True)
+    steps = np.arange(-reach, reach + 1e-9, 0.25)
+    pts = on[:, None, :] + steps[None, :, None] * normal[:, None, :]
+    smooth = cv2.GaussianBlur(level, (0, 0), 1.0)
+    prof = cv2.remap(
+        smooth,
+        pts[..., 0].astype(np.float32),
+        pts[..., 1].astype(np.float32),
+        cv2.INTER_LINEAR,
+        borderMode=cv2.BORDER_REPLICATE,
+    ) - np.float32(0.5)
+    out = []
+    centre = len(steps) // 2
+    for k in range(n):
+        p = prof[k]
+        cross = np.flatnonzero(np.sign(p[:-1]) != np.sign(p[1:]))
+        if cross.size == 0:
+            continue
+        j = cross[np.argmin(np.abs(cross - centre))]
+        frac = p[j] / (p[j] - p[j + 1])
+        out.append(pts[k, j] + frac * (pts[k, j + 1] - pts[k, j]))
+    return np.array(out).reshape(-1, 2)
+
+
+def refine_rim(level: NDArray[np.float32], rim: Ellipse) -> tuple[Ellipse, NDArray]:
+    """The rim fitted again to its points to a fraction of a pixel, outliers (the ball or
+    the mark at the rim) left out; returns the ellipse and the points kept."""
+    pts = rim_points(level, rim)
+    for k in range(3):
+        if len(pts) < 20:
+            break
+        rim = fit_ellipse(pts)
+        dev = (rim.radius(pts) - 1.0) * rim.b
+        spread = 1.4826 * np.median(np.abs(dev - np.median(dev))) + 0.05
+        pts = pts[np.abs(dev) < 4 * spread]
+        pts = rim_points(level, rim) if k == 0 else pts
+    return rim, pts
+
+
+def rim_points_again(level: NDArray[np.float32], rim: Ellipse) -> NDArray[np.float64]:
+    """The rim's points on a later frame, those within 1.5 px of ``rim`` (the ball or the
+    mark at the rim left out)."""
+    pts = rim_points(level, rim)
+    return pts[np.abs((rim.radius(pts) - 1.0) * rim.b) < 1.5]
+
+
+def find_platter(lab: NDArray[np.float32]) -> tuple[Platter, NDArray[np.float64]] | None:
+    """The platter of a CIELAB image, its rim refined, and the rim's points; None if none."""
+    rim0 = find_rim(lab)
+    if rim0 is None:
+        return None
+    platter = platter_colours(lab, rim0)
+    if platter.contrast < 1e-6:
+        return None
+    rim, pts = refine_rim(platter.level(lab), rim0)
+    return platter._replace(rim=rim), pts

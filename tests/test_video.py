@@ -3,6 +3,7 @@ solutions (small: 480x270, about a second), and on videos that cannot be tracked
 
 from __future__ import annotations
 
+import itertools
 import json
 import math
 import subprocess
@@ -262,3 +263,72 @@ def test_sphere_centre_from_the_centre_of_its_image() -> None:
     np.testing.assert_allclose(
         camera.sphere_centre(pose, centre, radius)[0], true, atol=1e-6 * radius
     )
+
+
+# --------------------------------------------------------------------------- seeds and checks
+def _at(track, which: str) -> str:
+    """The first frame's pixel of the ball or the mark, as U,V."""
+    uv = (track.image if which == "ball" else track.mark_image)[0]
+    return f"{uv[0]:.1f},{uv[1]:.1f}"
+
+
+def test_seeds_on_the_ball_and_the_mark_give_the_same_track(rendered, tmp_path, capsys) -> None:
+    path, _, track, _ = rendered
+    out = tmp_path / "seeded.csv"
+    res = run_here(capsys, "track", str(path), "--ball-radius", "0.008", "--platter-radius",
+                   "0.15", "--ball-at", _at(track, "ball"), "--mark-at", _at(track, "mark"),
+                   "-o", str(out))  # fmt: skip
+    assert res.returncode == 0, res.stderr
+    np.testing.assert_allclose(film.read_film(out).x, track.film.x, atol=1e-9)
+
+
+@pytest.mark.parametrize(
+    ("options", "says"),
+    [
+        pytest.param(("--ball-at", "mark"), "--ball-at", id="mark-seeded-as-ball"),
+        pytest.param(("--mark-at", "ball"), "--mark-at", id="ball-seeded-as-mark"),
+        pytest.param(("--rpm", "34"), "not at the given --rpm 34", id="rpm-2-percent-off"),
+        pytest.param(("--ball-radius", "0.012"), "ball's image is", id="radius-half-again"),
+        pytest.param(("--ball-radius", "0.016"), "check --ball-radius", id="radius-twice"),
+        pytest.param(("--mark-at", "3,3"), "--mark-at 3,3: nothing there", id="seed-on-nothing"),
+    ],
+)
+def test_a_track_that_contradicts_itself_is_refused(
+    rendered, options, says, tmp_path, capsys
+) -> None:
+    """A wrong object (forced by a seed), a wrong rate or a wrong radius: one line naming what
+    disagreed and the option that helps, exit status 2, nothing written but --plot's picture
+    of what was found."""
+    path, _, track, _ = rendered
+    option, value = options
+    if value in ("ball", "mark"):
+        value = _at(track, value)
+    args = {"--ball-radius": "0.008", "--platter-radius": "0.15", option: value}
+    out, picture = tmp_path / "film.csv", tmp_path / "found.png"
+    res = run_here(capsys, "track", str(path), *itertools.chain(*args.items()), "-o", str(out),
+                   "--plot", str(picture))  # fmt: skip
+    assert res.returncode == 2
+    assert says in res.stderr
+    assert len(res.stderr.strip().splitlines()) == 1
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["found.png"]
+
+
+def test_fit_video_stops_at_a_failed_check(rendered, capsys) -> None:
+    path, _, _, _ = rendered
+    res = run_here(capsys, "fit", str(path), "--radius", "0.004", "--platter-radius", "0.15")
+    assert res.returncode == 2
+    assert "ball's image is" in res.stderr
+    assert res.stdout == ""
+
+
+def test_checks_are_written_with_their_values(rendered, tmp_path, capsys) -> None:
+    path, _, _, _ = rendered
+    out = tmp_path / "film.csv"
+    res = run_here(capsys, "track", str(path), "--ball-radius", "0.008", "--platter-radius",
+                   "0.15", "-o", str(out))  # fmt: skip
+    assert res.returncode == 0
+    checks = json.loads(out.with_suffix(".json").read_text())["checks"]
+    assert set(checks) == {"rate", "mark_on_circle", "axis", "tilt", "ball_moves", "ball_size"}
+    assert all(c["passed"] for c in checks.values())
+    assert 0.9 < checks["ball_size"]["value"] < 1.1
+    assert checks["axis"]["value"] < 0.01

@@ -231,7 +231,7 @@ def find(
         raise VideoError(
             f"no ball found on the first frame: nothing round of about {expected:.0f} px (a ball "
             "of the given radius at the rim's scale) differs from the platter and moves on its "
-            f"own; {SEED_HINT}",
+            f"own; check --ball-radius and --platter-radius, or {SEED_HINT}",
             candidates,
         )
     candidates[ball] = candidates[ball]._replace(kind="ball")

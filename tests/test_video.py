@@ -315,7 +315,7 @@ def test_a_track_that_contradicts_itself_is_refused(
 
 def test_fit_video_stops_at_a_failed_check(rendered, capsys) -> None:
     path, _, _, _ = rendered
-    res = run_here(capsys, "fit", str(path), "--radius", "0.004", "--platter-radius", "0.15")
+    res = run_here(capsys, "fit", str(path), "--radius", "0.0052", "--platter-radius", "0.15")
     assert res.returncode == 2
     assert "ball's image is" in res.stderr
     assert res.stdout == ""

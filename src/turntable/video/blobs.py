@@ -5,8 +5,9 @@ A pixel's *share* is its CIELAB colour's step from the platter's towards the tar
 as a fraction of the whole step: 0 on the platter, 1 on the target.  A blob is a connected
 component of shares above `THRESHOLD` (a shadow, a groove or the platter's grain stays below
 it), its holes filled (a highlight).  Its centre weighs each pixel of the filled blob by 1,
-and each pixel of the one-pixel band about it by its share up to `SATURATION` (the part of the
-pixel the blob covers), so that the shading of a ball does not pull the centre to its lit side.
+and each pixel of the one-pixel band about it by the part of it the blob covers: its share
+ramped from 0 at `FLOOR` to 1 at 1 - `FLOOR` (1/2 at 1/2), so that neither the shading of a
+ball nor a shadow beside it (a share below `FLOOR`) pulls the centre aside.
 """
 
 from __future__ import annotations
@@ -25,8 +26,8 @@ except ImportError:  # without the extra [video]
 
 #: A pixel belongs to a blob where its share is above this.
 THRESHOLD = 0.45
-#: In the band about a blob, the share at which a pixel counts wholly.
-SATURATION = 0.6
+#: In the band about a blob, the share below which a pixel does not count.
+FLOOR = 0.25
 
 _KERNEL = np.ones((3, 3), np.uint8)
 
@@ -79,7 +80,8 @@ def blobs(
         filled = np.zeros_like(region)
         cv2.drawContours(filled, contours, -1, 1, -1)
         band = cv2.dilate(filled, _KERNEL).astype(bool) & ~filled.astype(bool)
-        wt = filled.astype(np.float32) + band * np.clip(share[sl] / SATURATION, 0.0, 1.0)
+        covered = np.clip((share[sl] - FLOOR) / (1 - 2 * FLOOR), 0.0, 1.0)
+        wt = filled.astype(np.float32) + band * covered
         total = float(wt.sum())
         if total <= 0:
             continue

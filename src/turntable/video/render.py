@@ -1,15 +1,19 @@
 """SYNTHETIC videos of a ball on a turntable, rendered from the exact solutions.
 
-`render_video` draws, frame by frame, what a camera above the turntable would film: a
-dark textured platter of radius P turning counterclockwise at Omega, with a bright round
-mark near its rim, on a grey table; a shaded bright ball whose centre is R above the
-platter, moving as one of the friction models says (`turntable.fit.positions`); motion
-blur over the shutter time, Gaussian sensor noise, H.264 (libx264, PyAV).  The file's name
-must contain SYNTHETIC, and its metadata say it is rendered.
+`render_video` draws, frame by frame and in colour, what a camera above the turntable would
+film: a textured platter of radius P turning counterclockwise at Omega, with grooves, a
+label at its centre and a mark (a disc, a square or a strip of tape) near its rim, on a
+table; a shaded ball (matte or shiny) whose centre is R above the platter, moving as one of
+the friction models says (`turntable.fit.positions`), and its shadow; what a phone adds:
+motion blur over the shutter time, a rolling shutter, barrel distortion, mains flicker,
+sensor noise, H.264 (libx264, yuv420p, PyAV).  By default the scene is grey: a dark platter,
+a white round mark, a bright matte ball, no label, no shadow.  The file's name must contain
+SYNTHETIC, and its metadata say it is rendered.
 """
 
 from __future__ import annotations
 
+import functools
 import math
 import os
 from fractions import Fraction
@@ -21,20 +25,21 @@ from numpy.typing import ArrayLike, NDArray
 
 from turntable.film import Film, Setup, check_setup
 from turntable.fit.models import positions
-from turntable.video import camera
+from turntable.video import _scene, camera
 from turntable.video.camera import Pose
 
 __all__ = ["SYNTHETIC", "Rendered", "Scene", "render_video"]
 
 #: Word that the file name and the metadata of every rendered video carry.
 SYNTHETIC = "SYNTHETIC"
-#: Grey levels (0-255) of the scene.
-TABLE, PLATTER, MARK, BALL = 150.0, 45.0, 235.0, 245.0
-#: Direction of the light (from above, towards the camera) and its ambient share.
-LIGHT = np.array([-0.3, -0.5, 1.0]) / math.sqrt(1.34)
+#: Share of the light on the ball that is ambient (the rest is Lambert's, from the light).
 AMBIENT = 0.5
+#: Peak of a specular ball's highlight (share of white) and its Blinn-Phong exponent.
+SPECULAR, SHININESS = 0.8, 60.0
 #: Samples in time over the shutter's opening (motion blur).
 BLUR_SAMPLES = 4
+
+RGB = tuple[float, float, float]
 
 
 class Scene(NamedTuple):
@@ -53,11 +58,13 @@ class Scene(NamedTuple):
     shutter : float
         Exposure time as a fraction of the frame interval.
     noise : float
-        Standard deviation of the sensor noise, grey levels.
+        Standard deviation of the sensor noise, levels (0-255), the same in the three colours
+        (phones remove the chroma noise).
     mark_radius : float
-        Radius of the round mark, in units of the ball's radius R.
+        Size of the mark, in units of the ball's radius R: the radius of a disc, half the
+        side of a square, half the short side of a strip.
     mark_at : float
-        Distance of the mark from the axis, in units of P.
+        Distance of the mark's centre from the axis, in units of P.
     crf : int
         Quality of the H.264 encoding (libx264's constant rate factor; 0 is lossless).
     hidden : tuple of int
@@ -68,6 +75,53 @@ class Scene(NamedTuple):
     jitter : float
         Variable frame rate: each frame's time but the first is moved by up to +- jitter / 2
         frame intervals (uniformly at random; at most 0.9), as phones record.
+    ball_colour : tuple of float
+        RGB (0-255) of the ball.
+    ball_finish : {"matte", "specular"}
+        Lambert shading, or with a Blinn-Phong highlight too (a steel or shiny plastic ball).
+    platter_colour : tuple of float
+        RGB (0-255) of the platter.
+    platter_grain : float
+        Standard deviation of the platter's grain, levels (0-255).
+    grooves : float
+        Amplitude of the brightness of the platter's concentric grooves, levels (0-255).
+    groove_pitch : float
+        Distance between the grooves, in units of P (at least 0.008).
+    label_radius : float
+        Radius of the label at the platter's centre, in units of P (0: no label).  It
+        turns with the platter and is printed: a spindle hole, rings, lines of blocks.
+    label_colour : tuple of float
+        RGB (0-255) of the label's paper.
+    mark_shape : {"disc", "square", "strip"}
+        Shape of the mark; a strip is a rectangle of tape, ``mark_aspect`` times as long
+        as it is wide.
+    mark_aspect : float
+        Length over width of a strip (>= 1).
+    mark_along : {"tangential", "radial"}
+        Direction of a strip's long side.
+    mark_colour : tuple of float
+        RGB (0-255) of the mark.
+    table_colour : tuple of float
+        RGB (0-255) of the table around the platter.
+    light_azimuth_deg, light_elevation_deg : float
+        Direction towards the (distant) light: angle from the lab's x axis counterclockwise,
+        and above the platter (10 to 90), degrees.  It shades the ball.
+    shadow : float
+        Strength of the ball's shadow on the platter (0 none, 0.5 half the light removed):
+        the sphere's projection along the light, with an edge soft over ~1.5 px.
+    lens_k1 : float
+        Radial distortion of the lens, x_d = x (1 + k1 r^2) in image coordinates
+        normalised by the focal length; < 0 is barrel distortion (in [-0.3, 0.3]).
+    readout : float
+        Rolling shutter: row v is exposed from t + readout v / (height fps), readout a
+        fraction of the frame interval (0: a global shutter).
+    flicker : float
+        Mains flicker: the light is multiplied by 1 + flicker sin(2 pi flicker_hz t + phase),
+        averaged over each row's exposure.
+    flicker_hz : float
+        Frequency of the flicker (100 Hz for 50 Hz mains, 120 for 60 Hz).
+    flicker_phase_deg : float
+        Phase of the flicker at t = 0, degrees.
     """
 
     platter_radius: float = 0.15
@@ -84,6 +138,27 @@ class Scene(NamedTuple):
     hidden: tuple[int, ...] = ()
     clockwise: bool = False
     jitter: float = 0.0
+    ball_colour: RGB = (245.0, 245.0, 245.0)
+    ball_finish: str = "matte"
+    platter_colour: RGB = (45.0, 45.0, 45.0)
+    platter_grain: float = 6.0
+    grooves: float = 4.0
+    groove_pitch: float = 0.025
+    label_radius: float = 0.0
+    label_colour: RGB = (200.0, 40.0, 40.0)
+    mark_shape: str = "disc"
+    mark_aspect: float = 2.0
+    mark_along: str = "tangential"
+    mark_colour: RGB = (235.0, 235.0, 235.0)
+    table_colour: RGB = (150.0, 150.0, 150.0)
+    light_azimuth_deg: float = -121.0
+    light_elevation_deg: float = 59.8
+    shadow: float = 0.0
+    lens_k1: float = 0.0
+    readout: float = 0.0
+    flicker: float = 0.0
+    flicker_hz: float = 100.0
+    flicker_phase_deg: float = 0.0
 
 
 class Rendered(NamedTuple):
@@ -120,119 +195,169 @@ def default_pose(scene: Scene) -> Pose:
     return pose
 
 
-def _texture(rng: np.random.Generator, n_r: int, n_phi: int, blur_cells: float) -> NDArray:
-    """Polar texture of the platter (grain and grooves), blurred along the angle."""
-    grain = rng.standard_normal((n_r, n_phi))
-    kernel = np.exp(-0.5 * (np.arange(-6, 7) / 2.0) ** 2)
-    grain = np.apply_along_axis(
-        lambda g: np.convolve(np.r_[g[-6:], g, g[:6]], kernel, "valid"), 1, grain
-    )
-    grain /= grain.std()
-    grooves = np.cos(np.linspace(0.0, 80.0 * math.pi, n_r))[:, None]
-    tex = PLATTER + 6.0 * grain + 4.0 * grooves
-    width = max(round(blur_cells), 1)
-    if width > 1:
-        f = np.fft.rfft(tex, axis=1)
-        box = np.fft.rfft(np.r_[np.ones(width), np.zeros(n_phi - width)] / width)
-        tex = np.fft.irfft(f * box, n=n_phi, axis=1)
-    return tex.astype(np.float32)
-
-
 class _Renderer:
+    """Draws the frames (RGBA, uint8): the platter is a lookup in its polar texture, the
+    mark, the shadow and the ball are drawn in windows around them."""
+
+    n_r, n_phi = 512, 4096  # the platter's polar texture; n_phi a power of 2
+
     def __init__(self, scene: Scene, pose: Pose, radius: float, omega: float, seed: int) -> None:
         self.scene, self.pose, self.radius, self.omega = scene, pose, radius, omega
-        self.rng = np.random.default_rng(seed)
+        self.rng, self.light = np.random.default_rng(seed), _scene.light(scene)
         width, height = scene.size
         v, u = np.mgrid[0:height, 0:width].astype(float)
-        self.rays = camera.rays(pose, u, v).astype(np.float32)
+        u, v_pin = _scene.undistort(pose, u, v, scene.lens_k1)
+        self.rays = camera.rays(pose, u, v_pin).astype(np.float32)
         self.eye = camera.centre(pose)
-        xy = camera.back_project(pose, np.stack([u, v], axis=-1))
-        down = self.rays[..., 2] < 0
+        xy = camera.back_project(pose, np.stack([u, v_pin], axis=-1))
         self.x, self.y = xy[..., 0], xy[..., 1]
         r = np.hypot(self.x, self.y)
         # metres per pixel on the plane: the change of r from one pixel to the next
-        foot = np.hypot(*np.gradient(r))
-        p = scene.platter_radius
-        self.cover = np.where(down, np.clip(0.5 + (p - r) / np.maximum(foot, 1e-12), 0, 1), 0)
-        self.inside = np.flatnonzero(self.cover > 0)
-        self.n_r, self.n_phi = 512, 4096
-        phi = np.mod(np.arctan2(self.y, self.x).ravel()[self.inside], 2 * math.pi)
-        self.i_r = np.minimum(
-            (r.ravel()[self.inside] / p * self.n_r).astype(np.int32), self.n_r - 1
-        )
-        self.phi_cells = (phi / (2 * math.pi) * self.n_phi).astype(np.int32) % self.n_phi
-        exposure = scene.shutter / scene.fps
-        self.exposure = exposure
-        self.tex = _texture(
-            self.rng, self.n_r, self.n_phi, abs(omega) * exposure / (2 * math.pi) * self.n_phi
-        )
-        table = TABLE + 4.0 * self.rng.standard_normal((height, width)) + 15.0 * (v / height - 0.5)
-        self.base = (table * (1.0 - self.cover)).astype(np.float32)
-        self.cover32 = self.cover.ravel()[self.inside].astype(np.float32)
-        self.noise = self.rng.standard_normal((2 * height, 2 * width), dtype=np.float32)
-        self.noise *= np.float32(scene.noise)
-        self.foot = foot
+        self.foot = np.maximum(np.hypot(*np.gradient(r)), 1e-12)
+        p, n_r, n_phi = scene.platter_radius, self.n_r, self.n_phi
+        cover = np.where(self.rays[..., 2] < 0, np.clip(0.5 + (p - r) / self.foot, 0, 1), 0)
+        cover = cover.ravel()
+        self.exposure = scene.shutter / scene.fps
+        self.offsets = self.exposure * (np.arange(BLUR_SAMPLES) + 0.5) / BLUR_SAMPLES
+        self.row_dt = scene.readout / scene.fps / height  # rolling shutter: delay of a row
+        turn = omega * self.exposure / (2 * math.pi) * n_phi
+        tex = _scene.platter_texture(scene, self.rng, n_r, n_phi, turn)
+        self.tex, self.tex32 = tex.reshape(-1, 4), tex.view(np.uint32).reshape(-1)
+        inside = np.flatnonzero(cover > 0)
+        phi = np.arctan2(self.y, self.x).ravel()[inside] / (2 * math.pi) * n_phi
+        # the rolling shutter: row v sees the platter turned further by Omega row_dt v
+        phi -= omega * self.row_dt * v.ravel()[inside] / (2 * math.pi) * n_phi
+        cells = np.floor(phi).astype(np.int64) % n_phi
+        rows = np.minimum((r.ravel()[inside] / p * n_r).astype(np.int64), n_r - 1)
+        lookup = (rows * n_phi).astype(np.int32), cells.astype(np.int32)
+        full = cover[inside] >= 1
+        self.full, self.full_r, self.full_phi = inside[full], lookup[0][full], lookup[1][full]
+        self.edge, self.edge_r, self.edge_phi = inside[~full], lookup[0][~full], lookup[1][~full]
+        self.edge_cover = cover[self.edge, None].astype(np.float32)
+        # the table: grain and a gradient of the light
+        grain = 4.0 * self.rng.standard_normal((height, width)) + 15.0 * (v / height - 0.5)
+        table = _scene.rgb(scene.table_colour, "table_colour") * (1 + grain / 150.0)[..., None]
+        self.base = np.full((height, width, 4), 255, dtype=np.uint8)
+        self.base[..., :3] = np.clip(table + 0.5, 0, 255)
+        edge_table = table.reshape(-1, 3)[self.edge] * (1 - self.edge_cover)
+        self.edge_table = edge_table.astype(np.float32)
+        self.noise = None
+        if scene.noise > 0:
+            noise = self.rng.standard_normal((2 * height, 2 * width, 1), dtype=np.float32)
+            noise = np.round(noise * np.float32(scene.noise)).astype(np.int16)
+            self.noise = np.repeat(noise, 4, axis=2)  # contiguous: faster to add
+        self.colour = {c: _scene.rgb(getattr(scene, c), c) for c in _scene.COLOURS}
+        self._box = functools.partial(_scene.window, pose, k1=scene.lens_k1)  # lab points (n, 3)
 
-    def _box(self, centre: NDArray, half: float) -> tuple[slice, slice]:
-        width, height = self.scene.size
-        u0, v0 = centre
-        return (
-            slice(max(int(v0 - half), 0), min(int(v0 + half) + 2, height)),
-            slice(max(int(u0 - half), 0), min(int(u0 + half) + 2, width)),
-        )
+    def _dt(self, box: tuple[slice, slice]) -> NDArray:
+        """Delay (rows, 1) of the exposure of the window's rows (rolling shutter), s."""
+        return self.row_dt * np.arange(box[0].start, box[0].stop, dtype=float)[:, None]
 
-    def frame(self, t: float, ball: NDArray[np.float64] | None) -> NDArray[np.uint8]:
-        sc, pose = self.scene, self.pose
-        img = self.base.copy().ravel()
-        shift = self.omega * t / (2 * math.pi) * self.n_phi
-        i_phi = (self.phi_cells - np.int32(round(shift) % self.n_phi)) % self.n_phi
-        img[self.inside] += self.cover32 * self.tex[self.i_r, i_phi]
-        img = img.reshape(self.base.shape)
-        times = t + self.exposure * (np.arange(BLUR_SAMPLES) + 0.5) / BLUR_SAMPLES
-        # the mark: a disc on the platter, at angle Omega t
-        rho, at = sc.mark_radius * self.radius, sc.mark_at * sc.platter_radius
-        marks = at * np.column_stack([np.cos(self.omega * times), np.sin(self.omega * times)])
-        centre = camera.project(pose, marks.mean(axis=0))
-        half = (rho + at * abs(self.omega) * self.exposure) / self.foot[
-            int(np.clip(centre[1], 0, sc.size[1] - 1)), int(np.clip(centre[0], 0, sc.size[0] - 1))
-        ] + 3
-        box = self._box(centre, half)
-        x, y, foot = self.x[box], self.y[box], np.maximum(self.foot[box], 1e-12)
-        cov = np.mean(
-            [np.clip(0.5 + (rho - np.hypot(x - mx, y - my)) / foot, 0, 1) for mx, my in marks],
-            axis=0,
-        )
-        img[box] = img[box] * (1 - cov) + MARK * cov
+    def frame(
+        self, t: float, ball: NDArray | None, velocity: NDArray | None = None, dt: float = 0.0
+    ) -> NDArray[np.uint8]:
+        """Frame at t (RGBA, (height, width, 4)); ``ball``: the centres (samples, 2) over
+        the shutter's opening, at delay ``dt`` of the rolling shutter, where the ball's
+        velocities are ``velocity`` (samples, 2) (for the other rows)."""
+        sc = self.scene
+        img = self.base.copy()
+        mask = self.n_phi - 1
+        s = np.int32(math.floor(self.omega * t / (2 * math.pi) * self.n_phi) & mask)
+        img32 = img.view(np.uint32).reshape(-1)
+        img32[self.full] = self.tex32[self.full_r + ((self.full_phi - s) & mask)]
+        edge = self.tex[self.edge_r + ((self.edge_phi - s) & mask), :3]
+        img.reshape(-1, 4)[self.edge, :3] = self.edge_table + self.edge_cover * edge + 0.5
+        self._mark(img, t)
         if ball is not None:
-            self._ball(img, ball)
-        # sensor noise: a window at a random place of a larger field of noise
-        dv, du = self.rng.integers(0, self.base.shape[0]), self.rng.integers(0, self.base.shape[1])
-        img += self.noise[dv : dv + img.shape[0], du : du + img.shape[1]]
-        return np.clip(img + 0.5, 0, 255).astype(np.uint8)
+            if velocity is None:
+                velocity, dt = np.zeros_like(ball), 0.0
+            if sc.shadow > 0:
+                self._shadow(img, ball, velocity, dt)
+            self._ball(img, ball, velocity, dt)
+        dv, du = self.rng.integers(0, img.shape[0]), self.rng.integers(0, img.shape[1])
+        h, w = img.shape[:2]
+        noise = None if self.noise is None else self.noise[dv : dv + h, du : du + w]
+        if sc.flicker == 0 and noise is None:
+            return img
+        out = img.astype(np.int16)
+        if sc.flicker > 0:
+            rows = self.row_dt * np.arange(h, dtype=float)
+            _scene.brighten(out, _scene.flicker_gain(sc, t, rows, self.exposure))
+        if noise is not None:
+            out += noise
+        return np.clip(out, 0, 255, out=out).astype(np.uint8)
 
-    def _ball(self, img: NDArray, ball: NDArray[np.float64]) -> None:
-        """Draw the ball (its centres over the shutter's opening, shape (samples, 2))."""
-        pose, radius = self.pose, self.radius
-        centre = camera.project(pose, ball.mean(axis=0), height=radius)
-        spread = np.ptp(camera.project(pose, ball, height=radius), axis=0).max()
-        depth = np.linalg.norm(np.r_[ball.mean(axis=0), radius] - self.eye)
-        half = 1.6 * radius * pose.focal / depth + spread + 3
-        box = self._box(centre, half)
-        d = self.rays[box].astype(float)
-        cov_sum = np.zeros(d.shape[:2])
-        light_sum = np.zeros(d.shape[:2])
-        for bx, by in ball:
-            s = np.array([bx, by, radius]) - self.eye
-            tca = d @ s
-            dist = np.sqrt(np.maximum(s @ s - tca**2, 0.0))
-            cov = np.clip(0.5 + (radius - dist) / (tca / pose.focal), 0, 1)
-            hit = d * (tca - np.sqrt(np.maximum(radius**2 - dist**2, 0.0)))[..., None] - s
-            normal = hit / np.linalg.norm(hit, axis=-1, keepdims=True)
-            shade = BALL * (AMBIENT + (1 - AMBIENT) * np.maximum(normal @ LIGHT, 0.0))
-            cov_sum += cov
-            light_sum += cov * shade
-        n = len(ball)
-        img[box] = img[box] * (1 - cov_sum / n) + light_sum / n
+    def _mark(self, img: NDArray, t: float) -> None:
+        """Draw the mark, at angle Omega t on the circle of radius mark_at P."""
+        sc, omega = self.scene, self.omega
+        rho, at = sc.mark_radius * self.radius, sc.mark_at * sc.platter_radius
+        long = sc.mark_aspect * rho if sc.mark_shape == "strip" else rho
+        halves = (long, rho) if sc.mark_along == "radial" else (rho, long)  # radial, tangential
+        times = t + self.offsets
+        angles = omega * np.r_[times, times + sc.readout / sc.fps]
+        reach = 1.5 * long * np.array([[0, 0, 0], [1, 1, 0], [-1, -1, 0], [1, -1, 0], [-1, 1, 0]])
+        ends = at * np.column_stack([np.cos(angles), np.sin(angles), np.zeros_like(angles)])
+        box = self._box((ends[:, None, :] + reach[None]).reshape(-1, 3))
+        if box is None:
+            return
+        at_rows = [omega * (ti + self._dt(box)) for ti in times]
+        cov = _scene.mark_cover(sc, self.x[box], self.y[box], self.foot[box], at_rows, halves, at)
+        cov, win = cov[..., None], img[box][..., :3]
+        img[box][..., :3] = win * (1 - cov) + self.colour["mark_colour"] * cov + 0.5
+
+    def _centres(self, ball: NDArray, velocity: NDArray, dt: float, box: tuple[slice, slice]):
+        """The ball's centres (x, y), each (rows, 1), seen by the window's rows."""
+        late = self._dt(box) - dt
+        return [
+            (bx + vx * late, by + vy * late)
+            for (bx, by), (vx, vy) in zip(ball, velocity, strict=True)
+        ]
+
+    def _spread(self, ball: NDArray, velocity: NDArray, dt: float) -> NDArray:
+        """The ball's centres (n, 2) over the exposure and the readout."""
+        late = np.array([-dt, self.scene.readout / self.scene.fps - dt])
+        return (ball[:, None, :] + velocity[:, None, :] * late[None, :, None]).reshape(-1, 2)
+
+    def _shadow(self, img: NDArray, ball: NDArray, velocity: NDArray, dt: float) -> None:
+        """Darken the platter in the ball's shadow: the projection of the sphere along the
+        light onto the plane z = 0, an ellipse."""
+        big, lx, ly, lz = self.radius, *self.light
+        along = np.array([lx, ly]) / max(math.hypot(lx, ly), 1e-12)
+        centres = self._spread(ball, velocity, dt) - big * np.array([lx, ly]) / lz
+        reach = 1.3 * big * np.array([along / lz, -along / lz, (-along[1], along[0])])
+        reach = np.vstack([reach, -reach[2]])
+        pts = (centres[:, None, :] + reach[None]).reshape(-1, 2)
+        box = self._box(np.column_stack([pts, np.zeros(len(pts))]))
+        if box is None:
+            return
+        centres = self._centres(ball, velocity, dt, box)
+        cov = _scene.shadow_cover(
+            self.x[box], self.y[box], self.foot[box], centres, big, self.light
+        )
+        dark = 1 - self.scene.shadow * cov[..., None]
+        img[box][..., :3] = img[box][..., :3] * dark + 0.5
+
+    def _ball(self, img: NDArray, ball: NDArray, velocity: NDArray, dt: float) -> None:
+        """Draw the ball (its centres over the shutter's opening, shape (samples, 2)) by
+        casting rays at the sphere."""
+        pose, big, light = self.pose, self.radius, self.light
+        centres = self._spread(ball, velocity, dt)
+        reach = 1.3 * big * np.vstack([np.eye(3), -np.eye(3)])
+        pts = np.column_stack([centres, np.full(len(centres), big)])
+        box = self._box((pts[:, None, :] + reach[None]).reshape(-1, 3))
+        if box is None:
+            return
+        centres = self._centres(ball, velocity, dt, box)
+        cov, shade = _scene.sphere(
+            self.rays[box].astype(float),
+            [(cx - self.eye[0], cy - self.eye[1], big - self.eye[2]) for cx, cy in centres],
+            big,
+            pose.focal,
+            light,
+            self.colour["ball_colour"],
+            (AMBIENT, SPECULAR if self.scene.ball_finish == "specular" else 0.0, SHININESS),
+        )
+        img[box][..., :3] = img[box][..., :3] * (1 - cov)[..., None] + shade + 0.5
 
 
 def render_video(
@@ -269,15 +394,20 @@ def render_video(
     Notes
     -----
     Frame i, at time t_i = i / fps of the video (moved by the jitter, rounded to the
-    container's 1/90000 s), shows the scene averaged over the
-    shutter's opening (`BLUR_SAMPLES` instants), the model's times t_i to t_i + e, e =
-    shutter / fps; ``state0`` is the state at the first opening, and the true position of
-    frame i is the one at its middle, t_i + e / 2, as a tracker sees it.  The ball's image
-    is drawn by casting rays at a sphere whose centre is at height R, so that its image is the
+    container's 1/90000 s), shows the scene averaged over the shutter's opening
+    (`BLUR_SAMPLES` instants), the model's times t_i to t_i + e, e = shutter / fps;
+    ``state0`` is the state at the first opening, and the true position of frame i is the
+    one at its middle, t_i + e / 2, as a tracker sees it. The ball's image is drawn by
+    casting rays at a sphere whose centre is at height R, so that its image is the
     perspective image of a ball, not of a disc on the platter.  A clockwise scene draws
     the ball at (x, -y) and turns the platter the other way; the returned positions stay
     those of the model, in which the platter turns counterclockwise (as `turntable.video.track`
-    reports a clockwise platter's film).
+    reports a clockwise platter's film).  With a rolling shutter (``Scene.readout``), row v
+    is exposed ``readout v / (height fps)`` later than the first: the platter, its label and
+    the mark are drawn at each row's time; the ball and its shadow at the time of the row
+    of the ball's image's centre, moved row by row along the ball's velocity there (linear
+    over the few rows of its image); the returned positions stay those at t_i + e / 2, so
+    the ball's image lags them by its row's delay, as a phone's would.
 
     Examples
     --------
@@ -302,6 +432,7 @@ def render_video(
             "the axis of a rendered turntable is the origin: setup.axis must be (0, 0)"
         )
     scene = scene or Scene()
+    _scene.check(scene)
     pose = pose or default_pose(scene)
     n = math.floor(scene.duration * scene.fps * (1 + 1e-12)) + 1
     time_base = Fraction(1, 90000)
@@ -316,10 +447,21 @@ def render_video(
     sign = -1.0 if scene.clockwise else 1.0
     renderer = _Renderer(scene, pose, setup.radius, sign * setup.omega, seed)
     # model time = video time + half the shutter time: the first opening starts at t = 0
-    offsets = renderer.exposure * (np.arange(BLUR_SAMPLES) + 0.5) / BLUR_SAMPLES
-    samples = (t[:, None] + offsets[None, :]).ravel()
+    samples = (t[:, None] + renderer.offsets[None, :]).ravel()
     ball = positions(model, coefficient, state0, samples, setup).reshape(n, BLUR_SAMPLES, 2)
     xy = positions(model, coefficient, state0, t + renderer.exposure / 2, setup)
+    velocity, delay = None, np.zeros(n)
+    if scene.readout:
+        # the rolling shutter: the ball is seen later, as late as the row of its image
+        middle = np.column_stack([xy[:, 0], sign * xy[:, 1], np.full(n, setup.radius)])
+        rows = np.clip(_scene.image(pose, middle, scene.lens_k1)[:, 1], 0, scene.size[1] - 1)
+        delay = renderer.row_dt * rows
+        later = samples + np.repeat(delay, BLUR_SAMPLES)
+        ball = positions(model, coefficient, state0, later, setup).reshape(n, BLUR_SAMPLES, 2)
+        step = 0.05 * scene.readout / scene.fps
+        ahead = positions(model, coefficient, state0, later + step, setup)
+        velocity = (ahead.reshape(n, BLUR_SAMPLES, 2) - ball) / step
+        velocity[..., 1] *= sign
     radius_max = float(np.max(np.hypot(ball[..., 0], ball[..., 1])))
     if radius_max > scene.platter_radius - setup.radius:
         raise ValueError(
@@ -343,8 +485,10 @@ def render_video(
             stream.options = {"crf": str(scene.crf), "preset": "ultrafast"}
             hidden = set(scene.hidden)
             for i, ti in enumerate(t):
-                img = renderer.frame(ti, None if i in hidden else ball[i])
-                frame = av.VideoFrame.from_ndarray(img, format="gray")
+                seen = None if i in hidden else ball[i]
+                speed = None if velocity is None else velocity[i]
+                img = renderer.frame(ti, seen, speed, delay[i])
+                frame = av.VideoFrame.from_ndarray(img, format="rgba")
                 frame.pts = round(ti / time_base)
                 frame.time_base = time_base
                 out.mux(stream.encode(frame))

@@ -90,7 +90,9 @@ lint: $(STAMP)
 mutants: $(STAMP)
 	$(BIN)/python tools/mutants.py
 
+# benchmarks/video.py also renders with MuJoCo (the extra [bench]; offscreen through EGL).
 bench: $(STAMP)
+	$(PIP_INSTALL) -e ".[bench]"
 	$(BIN)/python benchmarks/run.py
 	$(BIN)/python benchmarks/pipeline.py
 
@@ -105,7 +107,7 @@ cluster-test: $(STAMP)
 # Re-resolve the newest versions into constraints.txt (needs the network).
 lock:
 	rm -rf .lockvenv && $(PYTHON) -m venv .lockvenv
-	.lockvenv/bin/pip install --quiet ".[workflow,test,dev,notebooks,docs,slurm,video]"
+	.lockvenv/bin/pip install --quiet ".[workflow,test,dev,notebooks,docs,slurm,video,bench]"
 	{ echo "# Exact versions of every package the project installs (pip constraints)."; \
 	  echo "# Regenerate: make lock"; \
 	  .lockvenv/bin/pip freeze --all --exclude-editable | grep -v -e '^turntable' -e '^pip=='; } > constraints.txt

@@ -135,6 +135,25 @@ def _camouflage(rng):
     return {"ball_colour": (52.0, 50.0, 50.0)}, 5.0
 
 
+def _mujoco(rng):
+    def rgba(c):
+        return (*(x / 255 for x in c), 1.0)
+
+    ball = [GREYS["white"], GREYS["steel"], *COLOURS][rng.integers(2 + len(COLOURS))]
+    dark = rng.random() < 0.5
+    platter = (35.0, 35.0, 40.0) if dark else (150.0, 150.0, 155.0)
+    return {
+        "ball_rgba": rgba(ball),
+        "ball_specular": float(rng.uniform(0.1, 0.8)),
+        "platter_rgba": rgba(platter),
+        "mark_shape": "strip" if rng.random() < 0.5 else "dot",
+        "mark_rgba": rgba((240, 240, 240) if dark else (20, 20, 20)),
+        "label_radius": 0.3 if rng.random() < 0.5 else 0.0,
+        "light_azimuth_deg": float(rng.uniform(-180, 180)),
+        "light_elevation_deg": float(rng.uniform(50, 80)),
+    }, 5.0
+
+
 #: name: (draw of the scene's fields and the duration, within the filming guide, renderer)
 FAMILIES = {
     "classic": (_classic, True, "turntable"),
@@ -144,17 +163,14 @@ FAMILIES = {
     "phone": (_phone, True, "turntable"),
     "big_mark": (_big_mark, False, "turntable"),
     "camouflage": (_camouflage, False, "turntable"),
-    "mujoco": (None, True, "mujoco"),
+    "mujoco": (_mujoco, True, "mujoco"),
 }
 
 
 def draw(rng: np.random.Generator, i: int, family: str, level: float) -> dict[str, Any]:
     """The ball, the camera and the scene of video ``i`` of a family."""
     make, within, renderer = FAMILIES[family]
-    if make is None:
-        fields, duration = {}, 5.0
-    else:
-        fields, duration = make(rng)
+    fields, duration = make(rng)
     model = fit.MODELS[i % 2]
     radius = float(rng.uniform(0.006, 0.010))
     setup = film.Setup(radius, film.rpm_to_omega(RPM), 0.4, (0.0, 0.0))

@@ -12,6 +12,7 @@ ball nor a shadow beside it (a share below `FLOOR`) pulls the centre aside.
 
 from __future__ import annotations
 
+import math
 from typing import NamedTuple
 
 import numpy as np
@@ -29,6 +30,11 @@ THRESHOLD = 0.45
 #: In the band about a blob, the share below which a pixel does not count.
 FLOOR = 0.25
 
+#: Lightness difference (CIELAB) from which a blob's outline is found in lightness alone.
+EDGE_LIGHTNESS = 15.0
+#: Outline points farther than this (px) from the fitted circle are left out.
+EDGE_OFF = 1.0
+
 _KERNEL = np.ones((3, 3), np.uint8)
 
 
@@ -42,6 +48,14 @@ class Colour(NamedTuple):
         step = self.target - self.platter
         d = (step / float(step @ step)).astype(np.float32)
         return (lab_img - self.platter.astype(np.float32)) @ d
+
+    def edge_share(self, lab_img: NDArray[np.float32]) -> NDArray[np.float32]:
+        """The share in lightness alone where the lightnesses differ by `EDGE_LIGHTNESS` or
+        more (the chroma of a 4:2:0 video has half the resolution), else `share`."""
+        step = float(self.target[0] - self.platter[0])
+        if abs(step) < EDGE_LIGHTNESS:
+            return self.share(lab_img)
+        return (lab_img[..., 0] - np.float32(self.platter[0])) / np.float32(step)
 
 
 class Blob(NamedTuple):
@@ -60,9 +74,17 @@ def blobs(
     colour: Colour,
     allowed: NDArray[np.bool_],
     threshold: float = THRESHOLD,
+    outline: float = 0.0,
 ) -> list[Blob]:
-    """The blobs of ``colour`` in the window ``box`` of ``picture`` (only ``allowed`` pixels)."""
-    share = colour.share(lab(picture, box))
+    """The blobs of ``colour`` in the window ``box`` of ``picture`` (only ``allowed`` pixels).
+
+    With ``outline`` (a radius, px), a round blob's centre is that of the circle of that
+    radius through its outline (`outline_centre`) instead of its weighted centroid.
+    """
+    if box[0].stop - box[0].start < 3 or box[1].stop - box[1].start < 3:
+        return []  # a window off the image
+    lab_img = lab(picture, box)
+    share = colour.share(lab_img)
     ok = allowed[box]
     mask = ((share > threshold) & ok).astype(np.uint8)
     n, labels, stats, _ = cv2.connectedComponentsWithStats(mask, connectivity=8)
@@ -93,12 +115,70 @@ def blobs(
             or (x + w + u0 >= width)
             or (y + h + v0 >= height)
         )
-        out.append(
-            Blob(
-                float((wt * uu).sum() / total) + u0,
-                float((wt * vv).sum() / total) + v0,
-                total,
-                touches,
-            )
-        )
+        centre = np.array([(wt * uu).sum(), (wt * vv).sum()]) / total
+        if outline:
+            edge = colour.edge_share(lab_img)
+            centre = outline_centre(edge, centre, outline, centre)
+        out.append(Blob(float(centre[0]) + u0, float(centre[1]) + v0, total, touches))
     return out
+
+
+def outline_centre(
+    share: NDArray[np.float32],
+    start: NDArray,
+    radius: float,
+    fallback: NDArray,
+    rays: int = 48,
+) -> NDArray:
+    """The centre (window px) of the circle of radius ``radius`` (px) through a round blob's
+    outline.
+
+    Along each of ``rays`` rays from ``start``, the outline is the first place, going out,
+    where the share falls most steeply (its fall per pixel at least half the steepest along
+    the ray, from above `THRESHOLD`), to a fraction of a pixel.  The circle of the given
+    radius nearest those points is fitted by least squares, points more than `EDGE_OFF` px or
+    3 spreads off it dropped: where a ball's shaded limb is too dim to show, the terminator
+    passes for the outline and lies inside the circle; a shadow beside the ball begins with a
+    second fall, which is never reached.  Falls back to ``fallback`` with fewer than 12
+    points.
+    """
+    step = 0.25
+    r = np.arange(0.3 * radius, 1.7 * radius + 3.0, step)
+    a = np.linspace(0.0, 2 * math.pi, rays, endpoint=False)
+    pu = (start[0] + np.cos(a)[:, None] * r).astype(np.float32)
+    pv = (start[1] + np.sin(a)[:, None] * r).astype(np.float32)
+    prof = cv2.remap(share, pu, pv, cv2.INTER_LINEAR, borderMode=cv2.BORDER_REPLICATE)
+    fall = (prof[:, :-2] - prof[:, 2:]) / (2 * step)  # centred, at samples 1 .. n-2
+    points = []
+    for k in range(rays):
+        f = fall[k]
+        strong = (f >= 0.5 * f.max()) & (prof[k, 1:-1] < prof[k, 0]) & (f.max() > 0.1)
+        strong &= np.maximum.accumulate(prof[k, :-2]) > THRESHOLD
+        idx = np.flatnonzero(strong)
+        if idx.size == 0:
+            continue
+        j = idx[0]
+        while j + 1 < f.size and f[j + 1] > f[j]:
+            j += 1  # the peak of this fall
+        if 0 < j < f.size - 1:
+            den = f[j - 1] - 2 * f[j] + f[j + 1]
+            j = j + (0.5 * (f[j - 1] - f[j + 1]) / den if den < 0 else 0.0)
+        rr = r[0] + (j + 1) * step
+        points.append((start[0] + math.cos(a[k]) * rr, start[1] + math.sin(a[k]) * rr))
+    pts = np.array(points).reshape(-1, 2)
+    centre = np.asarray(fallback, float)
+    for _ in range(6):
+        if len(pts) < 12:
+            return fallback
+        for _ in range(3):  # Gauss-Newton for the centre of a circle of known radius
+            d = pts - centre
+            dist = np.maximum(np.hypot(d[:, 0], d[:, 1]), 1e-9)
+            jac = -d / dist[:, None]
+            centre = centre - np.linalg.lstsq(jac, dist - radius, rcond=None)[0]
+        dev = np.hypot(*(pts - centre).T) - radius
+        spread = 1.4826 * float(np.median(np.abs(dev - np.median(dev)))) + 0.1
+        keep = np.abs(dev - np.median(dev)) < min(3 * spread, EDGE_OFF)
+        if keep.all():
+            break
+        pts = pts[keep]
+    return centre

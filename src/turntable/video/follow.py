@@ -17,7 +17,9 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
+from turntable.video import camera
 from turntable.video.blobs import Blob, Colour, blobs
+from turntable.video.camera import Pose
 from turntable.video.decode import Picture, VideoError, lab, window
 from turntable.video.find import Found
 from turntable.video.platter import Ellipse, Platter, rim_points_again
@@ -107,6 +109,13 @@ def _pick(found: list[Blob], near: NDArray, area: float, factors) -> Blob | None
     )
 
 
+def _image_radius(pose: Pose, uv: NDArray, ball_radius: float) -> float:
+    """Radius (px) of the image of a ball of radius R whose image is at ``uv``."""
+    xy = camera.back_project(pose, uv[None], height=ball_radius)[0]
+    depth = float(np.linalg.norm(np.r_[xy, ball_radius] - camera.centre(pose)))
+    return pose.focal * ball_radius / depth
+
+
 def _inside_image(b: Blob, shape: tuple[int, int], r_px: float) -> bool:
     m = 1.5 * r_px + 2
     return m < b.u < shape[1] - 1 - m and m < b.v < shape[0] - 1 - m
@@ -119,11 +128,14 @@ def follow(
     rim_points: NDArray[np.float64],
     found: Found,
     mark_step: float,
+    pose: Pose,
+    ball_radius: float,
 ) -> Paths:
     """Follow the ball and the mark through ``frames`` (see the module's docstring).
 
     ``frame_count`` (0 if unknown) spreads the rim's frames; ``mark_step`` is how far (px)
-    the mark may move in one frame before its rate is known.
+    the mark may move in one frame before its rate is known; ``pose`` (the camera the rim
+    gives) and ``ball_radius`` (m) give the radius of the ball's image where it is.
 
     Raises
     ------
@@ -152,7 +164,13 @@ def follow(
         half = 2.5 * r_px + 4 + (ball.misses + 1) * (0 if v is None else v + 2 * r_px)
         box = window(tuple(near), half, picture.shape)
         got = _pick(
-            blobs(picture, box, found.ball_colour, allowed),
+            blobs(
+                picture,
+                box,
+                found.ball_colour,
+                allowed,
+                outline=_image_radius(pose, near, ball_radius),
+            ),
             near,
             ball_area or found.ball.area,
             BALL_AREA if ball_area else (0.2, 5.0),

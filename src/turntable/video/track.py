@@ -213,7 +213,14 @@ def _track(video, ball_radius, platter_radius, rpm, ball_at, mark_at):
     mark_step = (rpm / 60 * 2 * math.pi if rpm else 8.0) * platter.rim.a / (info.rate or 30.0)
     try:
         paths = follow(
-            itertools.chain(probe, frames), info.frames, platter, rim_pts, found, mark_step
+            itertools.chain(probe, frames),
+            info.frames,
+            platter,
+            rim_pts,
+            found,
+            mark_step,
+            pose0,
+            ball_radius,
         )
     except VideoError as exc:
         raise VideoError(str(exc), look) from None

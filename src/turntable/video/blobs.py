@@ -116,7 +116,7 @@ def blobs(
             or (y + h + v0 >= height)
         )
         centre = np.array([(wt * uu).sum(), (wt * vv).sum()]) / total
-        if outline:
+        if outline and 0.3 < total / (math.pi * outline**2) < 3.0:
             edge = colour.edge_share(lab_img)
             centre = outline_centre(edge, centre, outline, centre)
         out.append(Blob(float(centre[0]) + u0, float(centre[1]) + v0, total, touches))

@@ -14,6 +14,8 @@ and the option that would help.
   ratios within 0.03; when the mark has covered half a turn);
 - ``ball_moves``: the ball moves relative to the platter (the spread of its path in the
   platter's frame at least R / 2), not rigidly with it;
+- ``ball_path``: the ball never jumps: between frames where it was found, it moves no faster
+  than twice the rim (2 Omega P), as a ball on the platter cannot;
 - ``ball_size``: the ball's image is the size that R and the fitted camera predict (within
   a factor 0.7-1.4 in radius).
 """
@@ -41,6 +43,7 @@ HELP = {
     "axis": "it may not be the mark: give --mark-at U,V",
     "tilt": "it may not be the mark: give --mark-at U,V",
     "ball_moves": "it may be a mark or a label, not the ball: give --ball-at U,V",
+    "ball_path": "it may have been taken for something else on the way: give --ball-at U,V",
     "ball_size": "check --ball-radius and --platter-radius, or give --ball-at U,V",
 }
 
@@ -131,6 +134,15 @@ def checks(
         spread >= 0.5,
         f"the ball's path in the platter's frame spreads over {spread:.2g} R only: it turns "
         "with the platter",
+    )
+    steps = np.hypot(*np.diff(xy, axis=0).T) / np.maximum(np.diff(t[seen]), 1e-9)
+    fastest = float(steps.max()) / (2 * rate * platter_radius) if steps.size else 0.0
+    put(
+        "ball_path",
+        fastest,
+        1.0,
+        fastest <= 1.0,
+        f"the ball jumps, at {fastest:.2g} times twice the rim's speed",
     )
     centres = np.c_[xy, np.full(len(xy), ball_radius)]
     depth = np.linalg.norm(centres - camera.centre(cal.pose), axis=1)

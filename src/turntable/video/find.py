@@ -46,7 +46,7 @@ MARK_MIN_RADIUS = 0.45
 RATE_RANGE = (0.3, 12.0)
 #: The ball's image area within these factors of a ball of radius R's, its axis ratio below
 #: `MAX_ELONGATION`.
-AREA_RANGE, MAX_ELONGATION = (0.35, 2.8), 1.6
+AREA_RANGE, MAX_ELONGATION = (0.35, 2.8), 2.0
 SEED_HINT = "give the first frame's pixel with --ball-at U,V and --mark-at U,V"
 
 
@@ -160,7 +160,8 @@ def find(
             continue
         region = (labels[y : y + h, x : x + w] == i + 1).astype(np.uint8)
         pix = lab0[y : y + h, x : x + w][region.astype(bool)]
-        colour = np.median(pix, axis=0).astype(float)
+        dist = np.linalg.norm(pix - platter.colour.astype(np.float32), axis=1)
+        colour = np.median(pix[dist >= np.median(dist)], axis=0).astype(float)
         uv = centroids[i] + origin
         contrast = float(np.linalg.norm(colour - platter.colour))
         c = Candidate(float(uv[0]), float(uv[1]), float(area), colour, contrast, _shape(region))
@@ -168,6 +169,20 @@ def find(
         p.t.append(probe[0][0])
         p.uv.append((c.u, c.v))
         paths.append(p)
+    seeded = {}
+    for option, at in (("--ball-at", ball_at), ("--mark-at", mark_at)):
+        if at is not None:
+            seeded[option] = len(paths)
+            c = _seeded(lab0, origin, platter, at, 4 * math.sqrt(_area_at(pose, at, ball_radius)))
+            if c is None:
+                raise VideoError(
+                    f"{option} {at[0]:g},{at[1]:g}: nothing there differs from the platter; "
+                    "--plot shows the candidates",
+                    [p.c for p in paths],
+                )
+            paths.append(_Path(c))
+            paths[-1].t.append(probe[0][0])
+            paths[-1].uv.append((c.u, c.v))
     for t, picture in probe[1:]:
         _, _, st, cen = _components(lab(picture, box), platter, allowed[box], threshold)
         cen = cen + origin
@@ -201,7 +216,7 @@ def find(
             candidates[i] = candidates[i]._replace(turns_at=abs(centre) / platter_radius)
             marks.append((i, rate))
     if mark_at is not None:
-        m = _near(candidates, mark_at, "--mark-at")
+        m = seeded["--mark-at"]
         marks = [(m, dict(marks).get(m))]
     else:
         marks = sorted(
@@ -222,7 +237,9 @@ def find(
             for i in range(len(candidates))
         ]
         others = [c if i != m and not rigid[i] else None for i, c in enumerate(candidates)]
-        ball = _choose_ball(others, pose, ball_radius, ball_at, found_mark=len(marks) > 1)
+        ball = seeded.get("--ball-at")
+        if ball is None:
+            ball = _choose_ball(others, pose, ball_radius)
         if ball is not None:
             break
     if ball is None:
@@ -269,27 +286,42 @@ def _expected_area(pose: Pose, c: Candidate, ball_radius: float) -> float:
     return math.pi * (pose.focal * ball_radius / depth) ** 2
 
 
-def _near(candidates: list[Candidate | None], at: tuple[float, float], option: str) -> int:
-    """The candidate whose outline is within 10 px of a seed."""
-    d = [
-        math.hypot(c.u - at[0], c.v - at[1]) - math.sqrt(c.area / math.pi)
-        if c is not None and c.kind == "other"
-        else math.inf
-        for c in candidates
-    ]
-    if not candidates or min(d) > 10.0:
-        raise VideoError(
-            f"{option} {at[0]:g},{at[1]:g}: nothing there differs from the platter (no candidate "
-            "within 10 px); --plot shows the candidates",
-            [c for c in candidates if c is not None],
-        )
-    return int(np.argmin(d))
+def _area_at(pose: Pose, uv: tuple[float, float], ball_radius: float) -> float:
+    return _expected_area(pose, Candidate(uv[0], uv[1], 0.0, np.zeros(3), 0.0, 1.0), ball_radius)
 
 
-def _choose_ball(others, pose, ball_radius, ball_at, found_mark) -> int | None:
+def _seeded(lab_img, origin, platter: Platter, at, reach: float) -> Candidate | None:
+    """The candidate at a seed: the pixels about it nearer its colour than the platter's."""
+    u, v = round(at[0] - origin[0]), round(at[1] - origin[1])
+    h, w = lab_img.shape[:2]
+    if not (2 <= u < w - 2 and 2 <= v < h - 2):
+        return None
+    colour = np.median(lab_img[v - 2 : v + 3, u - 2 : u + 3].reshape(-1, 3), axis=0).astype(float)
+    contrast = float(np.linalg.norm(colour - platter.colour))
+    if contrast < MIN_CONTRAST:
+        return None
+    box = window((u, v), reach, (h, w))
+    share = Colour(colour, platter.colour).share(lab_img[box])
+    _, labels, stats, centroids = cv2.connectedComponentsWithStats(
+        (share > 0.45).astype(np.uint8), connectivity=8
+    )
+    i = labels[v - box[0].start, u - box[1].start]
+    if i == 0:
+        return None
+    region = (labels == i).astype(np.uint8)
+    pix = lab_img[box][region.astype(bool)]
+    return Candidate(
+        float(centroids[i][0] + box[1].start + origin[0]),
+        float(centroids[i][1] + box[0].start + origin[1]),
+        float(stats[i][4]),
+        np.median(pix, axis=0).astype(float),
+        contrast,
+        _shape(region),
+    )
+
+
+def _choose_ball(others, pose, ball_radius) -> int | None:
     """The ball among the candidates that do not turn with the platter (None elsewhere)."""
-    if ball_at is not None:
-        return _near(others, ball_at, "--ball-at")
     ok = [
         i
         for i, c in enumerate(others)

@@ -31,7 +31,7 @@ from turntable.video.platter import Ellipse, find_platter
 
 __all__ = ["FirstLook", "Track", "track_video"]
 
-#: Fewest frames in which the mark must be found.
+#: Fewest frames in which the mark, and the ball, must be found.
 MIN_MARK_FRAMES = 10
 #: The platter differs from what surrounds it by at least this (CIELAB distance).
 MIN_RIM_CONTRAST = 8.0
@@ -230,6 +230,11 @@ def _track(video, ball_radius, platter_radius, rpm, ball_at, mark_at):
             f"the mark was found on {int(ok_mark.sum())} frames only (at least "
             f"{MIN_MARK_FRAMES} are needed to measure the platter's rate)",
             look,
+        )
+    found_ball = int(np.isfinite(paths.ball[:, 0]).sum())
+    if found_ball < MIN_MARK_FRAMES:
+        raise VideoError(
+            f"the ball was found on {found_ball} frames only: give --ball-at U,V on it", look
         )
     t = paths.t - paths.t[0]
     cal = calibrate(

@@ -34,6 +34,8 @@ FLOOR = 0.25
 EDGE_LIGHTNESS = 15.0
 #: Outline points farther than this (px) from the fitted circle are left out.
 EDGE_OFF = 1.0
+#: An outline is a fall to a share below this (2 px beyond it): not the edge of a highlight.
+BELOW = 0.75
 
 _KERNEL = np.ones((3, 3), np.uint8)
 
@@ -133,14 +135,14 @@ def outline_centre(
     """The centre (window px) of the circle of radius ``radius`` (px) through a round blob's
     outline.
 
-    Along each of ``rays`` rays from ``start``, the outline is the first place, going out,
-    where the share falls most steeply (its fall per pixel at least half the steepest along
-    the ray, from above `THRESHOLD`), to a fraction of a pixel.  The circle of the given
-    radius nearest those points is fitted by least squares, points more than `EDGE_OFF` px or
-    3 spreads off it dropped: where a ball's shaded limb is too dim to show, the terminator
-    passes for the outline and lies inside the circle; a shadow beside the ball begins with a
-    second fall, which is never reached.  Falls back to ``fallback`` with fewer than 12
-    points.
+    Along each of ``rays`` rays from ``start``, the outline is the first place, going out, where
+    the share falls most steeply (its fall per pixel at least half the steepest along the ray,
+    from above `THRESHOLD`, to below `BELOW`: not off a highlight), to a fraction of a pixel.
+    The circle of the given radius nearest those points is fitted by least squares, points more
+    than `EDGE_OFF` px or 3 spreads off it dropped: where a ball's shaded limb is too dim to
+    show, the terminator passes for the outline and lies inside the circle; a shadow beside the
+    ball begins with a second fall, which is never reached. Falls back to ``fallback`` with
+    fewer than 12 points.
     """
     step = 0.25
     r = np.arange(0.3 * radius, 1.7 * radius + 3.0, step)
@@ -154,12 +156,17 @@ def outline_centre(
         f = fall[k]
         strong = (f >= 0.5 * f.max()) & (prof[k, 1:-1] < prof[k, 0]) & (f.max() > 0.1)
         strong &= np.maximum.accumulate(prof[k, :-2]) > THRESHOLD
-        idx = np.flatnonzero(strong)
-        if idx.size == 0:
+        j = None
+        for i in np.flatnonzero(strong):
+            if j is not None and i <= j:
+                continue
+            j = i
+            while j + 1 < f.size and f[j + 1] > f[j]:
+                j += 1  # the peak of this fall
+            if prof[k, min(j + 1 + int(2 / step), prof.shape[1] - 1)] < BELOW:
+                break  # a fall to near the platter or a shadow, not off a highlight
+        else:
             continue
-        j = idx[0]
-        while j + 1 < f.size and f[j + 1] > f[j]:
-            j += 1  # the peak of this fall
         if 0 < j < f.size - 1:
             den = f[j - 1] - 2 * f[j] + f[j + 1]
             j = j + (0.5 * (f[j - 1] - f[j + 1]) / den if den < 0 else 0.0)

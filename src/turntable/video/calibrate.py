@@ -4,7 +4,9 @@ The rim is a circle of radius P in the plane z = 0; the mark, a point of the pla
 distance r_m from the axis, is at the angle phi0 + Omega t.  `calibrate` fits, by least
 squares, a pinhole camera (`turntable.video.camera`: focal length, tilt, roll, look-at
 point, distance; the principal point at the image's centre, square pixels) together with
-r_m, phi0 and Omega, to the image points of the rim and the tracked image of the mark.
+r_m, phi0 and Omega, to the image points of the rim and the tracked image of the mark, and
+a rolling shutter's readout time: the mark at row v of a frame is seen at that frame's time
+plus readout v / height.
 The rim alone (an ellipse: five numbers) cannot fix the camera's perspective; the mark's
 uniform turning fixes the rest, and the axis's image with it.  Weak priors keep the focal
 length (ln f within 1 of ln of the image's width) and the roll (within 1 rad of its start)
@@ -25,9 +27,11 @@ from turntable.video import camera
 from turntable.video.camera import Pose
 from turntable.video.platter import Ellipse
 
-#: Spread of the priors on ln(focal length / image width) and on the roll (rad).
+#: Spread of the priors on ln(focal length / image width), on the roll (rad) and on the
+#: rolling shutter's readout time (frame intervals).
 PRIOR_LOG_FOCAL = 1.0
 PRIOR_ROLL = 1.0
+PRIOR_READOUT = 2.0
 
 
 class Calibration(NamedTuple):
@@ -48,6 +52,9 @@ class Calibration(NamedTuple):
     mark_lag1 : float
         Lag-1 autocorrelation of the mark's residuals (the standard errors are widened by
         sqrt((1 + r) / (1 - r)) for r > 0).
+    readout, readout_stderr : float
+        A rolling shutter's readout time, s: row v of a frame is seen ``readout * v / height``
+        after the frame's time (0 for a global shutter).
     """
 
     pose: Pose
@@ -59,6 +66,12 @@ class Calibration(NamedTuple):
     rim_rms_px: float
     mark_rms_px: float
     mark_lag1: float
+    readout: float = 0.0
+    readout_stderr: float = 0.0
+
+    def times(self, t: NDArray[np.float64], v: NDArray[np.float64]) -> NDArray[np.float64]:
+        """When image points at rows ``v`` of frames at times ``t`` were seen."""
+        return t + self.readout * np.asarray(v) / self.pose.size[1]
 
 
 def _pose(theta: NDArray, size: tuple[int, int]) -> Pose:
@@ -100,6 +113,9 @@ class _Problem:
         self, rim_pts, mark_t, mark_uv, size, platter_radius, rim: Ellipse, roll0, rim_frames
     ):
         self.rim_frames = rim_frames
+        steps = np.diff(mark_t)
+        self.interval = float(np.median(steps[steps > 0])) if np.any(steps > 0) else 1.0
+        self.row = mark_uv[:, 1] / size[1] if len(mark_uv) else mark_uv
         self.rim_pts, self.mark_t, self.mark_uv = rim_pts, mark_t, mark_uv
         self.size, self.p = size, platter_radius
         self.px_per_m = rim.a / platter_radius
@@ -112,7 +128,7 @@ class _Problem:
         return (np.hypot(q[:, 0], q[:, 1]) - self.p) * self.px_per_m / self.sigma_rim
 
     def mark(self, theta: NDArray) -> NDArray:
-        ang = theta[7] + theta[8] * self.mark_t
+        ang = theta[7] + theta[8] * (self.mark_t + theta[9] * self.interval * self.row)
         r = math.exp(theta[6])
         pred = camera.project(
             _pose(theta, self.size), r * np.column_stack([np.cos(ang), np.sin(ang)])
@@ -121,14 +137,18 @@ class _Problem:
 
     def priors(self, theta: NDArray) -> NDArray:
         return np.array(
-            [(theta[0] - self.log_f0) / PRIOR_LOG_FOCAL, (theta[2] - self.roll0) / PRIOR_ROLL]
+            [
+                (theta[0] - self.log_f0) / PRIOR_LOG_FOCAL,
+                (theta[2] - self.roll0) / PRIOR_ROLL,
+                theta[9] / PRIOR_READOUT if len(theta) > 9 else 0.0,
+            ]
         )
 
     def all(self, theta: NDArray) -> NDArray:
         return np.concatenate([self.rim(theta), self.mark(theta), self.priors(theta)])
 
     def rim_only(self, theta6: NDArray) -> NDArray:
-        theta = np.r_[theta6, 0.0, 0.0, 0.0]
+        theta = np.r_[theta6, 0.0, 0.0, 0.0, 0.0]
         return np.concatenate([self.rim(theta), self.priors(theta)])
 
 
@@ -169,7 +189,7 @@ def _fit(prob: _Problem, b0: float, roll0: float):
     q = camera.back_project(_pose(np.r_[theta6, 0, 0, 0], size), prob.mark_uv)
     ang = np.unwrap(np.arctan2(q[:, 1], q[:, 0]))
     slope, phase = np.polyfit(prob.mark_t, ang, 1)
-    theta = np.r_[theta6, math.log(np.median(np.hypot(q[:, 0], q[:, 1]))), phase, slope]
+    theta = np.r_[theta6, math.log(np.median(np.hypot(q[:, 0], q[:, 1]))), phase, slope, 0.0]
     for _ in range(2):
         fit = least_squares(prob.all, theta, method="lm", x_scale="jac")
         theta = fit.x
@@ -246,4 +266,6 @@ def calibrate(
         rim_rms_px=float(np.sqrt(np.mean((prob.rim(theta) * prob.sigma_rim) ** 2))),
         mark_rms_px=float(np.sqrt(np.mean(mark_res**2))),
         mark_lag1=r1,
+        readout=float(theta[9] * prob.interval),
+        readout_stderr=float(math.sqrt(max(cov[9, 9], 0.0)) * prob.interval),
     )

@@ -33,6 +33,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from turntable.film import Film, Setup, check_setup
 from turntable.fit import positions
+from turntable.video.decode import yuv420
 
 __all__ = ["SYNTHETIC", "MujocoRendered", "MujocoScene", "project", "render_mujoco"]
 
@@ -417,7 +418,7 @@ def render_mujoco(
                     dv, du = rng.integers(0, height), rng.integers(0, width)
                     img += noise[dv : dv + height, du : du + width]
                 img = np.clip(img, 0, 255).astype(np.uint8)
-                frame = av.VideoFrame.from_ndarray(img, format="rgb24")
+                frame = av.VideoFrame.from_ndarray(yuv420(img), format="yuv420p")
                 frame.pts = round(ti / time_base)
                 frame.time_base = time_base
                 out.mux(stream.encode(frame))

@@ -9,8 +9,9 @@ it, at the tracking noise `NOISE`), tilt 0-35 degrees, roll up to 5.  The scene 
 - rendered by `turntable.video.render` within the filming guide: a white ball on a dark platter
   (``classic``, 10 s: the speed is measured on these), a coloured ball on a grey platter with a
   strip of tape (``colour``), a dark ball on a light platter with its shadow (``dark``), a
-  specular ball crossing a printed label (``specular``), and a phone's video (``phone``:
-  barrel distortion, rolling shutter, mains flicker, variable frame rate, grooves);
+  specular ball crossing a printed label (``specular``), and a phone's video (``phone``: a
+  main camera's barrel distortion after its own correction, k1 down to -0.02, a rolling
+  shutter, mains flicker, variable frame rate, grooves);
 - rendered by it outside the guide: a mark as large as the ball (``big_mark``), a ball of
   nearly the platter's colour (``camouflage``);
 - rendered by MuJoCo (``mujoco``, `mujoco_scene.render_mujoco`), a renderer the project did
@@ -118,7 +119,7 @@ def _phone(rng):
         "ball_colour": GREYS["white"] if rng.random() < 0.5 else _colour(rng),
         "platter_colour": (40.0, 40.0, 40.0),
         "grooves": 10.0,
-        "lens_k1": float(rng.uniform(-0.05, 0.0)),
+        "lens_k1": float(rng.uniform(-0.02, 0.0)),
         "readout": float(rng.uniform(0.3, 0.9)),
         "flicker": float(rng.uniform(0.02, 0.08)),
         "flicker_phase_deg": float(rng.uniform(0, 360)),

@@ -125,7 +125,7 @@ def test_a_specular_ball_has_a_white_highlight(tmp_path) -> None:
         truth, (img,) = render(tmp_path / f"{finish}_SYNTHETIC.mp4", scene)
         u, v = np.round(camera.project(truth.pose, [[-0.09, 0.045]], height=RADIUS)[0]).astype(int)
         brightest[finish] = img[v - 8 : v + 9, u - 8 : u + 9].min(axis=-1).max()
-    assert brightest["matte"] < 60
+    assert brightest["matte"] < 80
     assert brightest["specular"] > 150
 
 

@@ -391,7 +391,7 @@ SCENES = {
         "mark_colour": (240, 220, 40), "clockwise": True,
     },
     "phone-lens-shutter-flicker": {
-        "ball_colour": (40, 160, 60), "lens_k1": -0.03, "readout": 0.5, "flicker": 0.05,
+        "ball_colour": (40, 160, 60), "lens_k1": -0.02, "readout": 0.5, "flicker": 0.05,
         "grooves": 10.0, "jitter": 0.3, "size": (1280, 720), "duration": 1.0,
     },
 }  # fmt: skip

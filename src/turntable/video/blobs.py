@@ -52,10 +52,12 @@ class Colour(NamedTuple):
         return (lab_img - self.platter.astype(np.float32)) @ d
 
     def edge_share(self, lab_img: NDArray[np.float32]) -> NDArray[np.float32]:
-        """The share in lightness alone where the lightnesses differ by `EDGE_LIGHTNESS` or
-        more (the chroma of a 4:2:0 video has half the resolution), else `share`."""
+        """The share in lightness alone where lightness makes at least half of the colours'
+        distance, and `EDGE_LIGHTNESS` or more (the chroma of a 4:2:0 video has half the
+        resolution), else `share`."""
         step = float(self.target[0] - self.platter[0])
-        if abs(step) < EDGE_LIGHTNESS:
+        distance = float(np.linalg.norm(self.target - self.platter))
+        if abs(step) < max(EDGE_LIGHTNESS, 0.5 * distance):
             return self.share(lab_img)
         return (lab_img[..., 0] - np.float32(self.platter[0])) / np.float32(step)
 

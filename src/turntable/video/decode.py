@@ -192,3 +192,21 @@ def _rgb(picture: Picture, box: tuple[slice, slice] | None) -> NDArray[np.float3
     rgb[..., 1] = yy - 0.344136 * cbb - 0.714136 * crr
     rgb[..., 2] = yy + 1.772 * cbb
     return np.clip(rgb, 0.0, 1.0, out=rgb)
+
+
+def yuv420(rgb_img: NDArray[np.uint8]) -> NDArray[np.uint8]:
+    """An RGB image (h, w, 3 or 4; h and w even) as one 4:2:0 video-range BT.601 frame, shape
+    (3 h / 2, w), for ``av.VideoFrame.from_ndarray(..., format="yuv420p")``: the inverse of
+    `lab`'s reading, with the same (H.264's) chroma siting."""
+    x = rgb_img[..., :3].astype(np.float32) / 255.0
+    h, w = x.shape[:2]
+    y = 16.0 + 219.0 * (x @ np.array([0.299, 0.587, 0.114], np.float32))
+    cb = 128.0 + 224.0 * (x @ np.array([-0.168736, -0.331264, 0.5], np.float32))
+    cr = 128.0 + 224.0 * (x @ np.array([0.5, -0.418688, -0.081312], np.float32))
+    planes = [y]
+    for c in (cb, cr):
+        rows = (c[0::2] + c[1::2]) / 2  # between rows 2j and 2j + 1
+        left = np.concatenate([rows[:, :1], rows[:, 1:-1:2]], axis=1)  # column 2i - 1
+        planes.append(0.25 * left + 0.5 * rows[:, 0::2] + 0.25 * rows[:, 1::2])
+    out = np.concatenate([planes[0].ravel(), planes[1].ravel(), planes[2].ravel()])
+    return np.clip(out + 0.5, 0, 255).astype(np.uint8).reshape(3 * h // 2, w)

@@ -5,9 +5,9 @@ film: a textured platter of radius P turning counterclockwise at Omega, with gro
 label at its centre and a mark (a disc, a square or a strip of tape) near its rim, on a
 table; a shaded ball (matte or shiny) whose centre is R above the platter, moving as one of
 the friction models says (`turntable.fit.positions`), and its shadow; what a phone adds:
-motion blur over the shutter time, a rolling shutter, barrel distortion, mains flicker,
-sensor noise, H.264 (libx264, yuv420p, PyAV).  By default the scene is grey: a dark platter,
-a white round mark, a bright matte ball, no label, no shadow.  The file's name must contain
+motion blur, a rolling shutter, barrel distortion, mains flicker, sensor noise, H.264
+(libx264, `turntable.video.decode.yuv420`).  By default the scene is grey: a dark platter, a
+white round mark, a bright matte ball, no label, no shadow.  The file's name must contain
 SYNTHETIC, and its metadata say it is rendered.
 """
 
@@ -27,6 +27,7 @@ from turntable.film import Film, Setup, check_setup
 from turntable.fit.models import positions
 from turntable.video import _scene, camera
 from turntable.video.camera import Pose
+from turntable.video.decode import yuv420
 
 __all__ = ["SYNTHETIC", "Rendered", "Scene", "render_video"]
 
@@ -488,7 +489,7 @@ def render_video(
                 seen = None if i in hidden else ball[i]
                 speed = None if velocity is None else velocity[i]
                 img = renderer.frame(ti, seen, speed, delay[i])
-                frame = av.VideoFrame.from_ndarray(img, format="rgba")
+                frame = av.VideoFrame.from_ndarray(yuv420(img), format="yuv420p")
                 frame.pts = round(ti / time_base)
                 frame.time_base = time_base
                 out.mux(stream.encode(frame))

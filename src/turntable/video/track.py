@@ -161,7 +161,7 @@ def track_video(
     >>> err = np.hypot(track.film.x - truth.film.x, track.film.y - truth.film.y)
     >>> print(f"{track.film.t.size} frames, Omega {abs(track.calibration.omega):.3f} rad/s, "
     ...       f"rms error {np.sqrt(np.mean(err**2)) / 0.008:.2f} R")
-    31 frames, Omega 4.710 rad/s, rms error 0.02 R
+    31 frames, Omega 4.708 rad/s, rms error 0.03 R
     """
     with Video(path) as video:
         try:

@@ -1,0 +1,97 @@
+"""The stages of `turntable.video`, each alone on plain data: the platter's rim, the ball's
+outline, the checks."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+cv2 = pytest.importorskip("cv2")
+
+from turntable.video import blobs, check  # noqa: E402
+from turntable.video.find import Found  # noqa: E402
+from turntable.video.follow import Paths  # noqa: E402
+from turntable.video.platter import find_platter  # noqa: E402
+
+
+def _lab(rgb: np.ndarray) -> np.ndarray:
+    return cv2.cvtColor(rgb.astype(np.float32) / 255, cv2.COLOR_RGB2Lab)
+
+
+def test_a_grey_platter_on_a_table_of_its_lightness_is_found_by_colour() -> None:
+    """A grey platter on a brown table of the same lightness: no grey level tells them
+    apart, their hues do; the rim is found to a fraction of a pixel."""
+    lightness = _lab(np.arange(256, dtype=np.uint8).repeat(3).reshape(1, 256, 3))[0, :, 0]
+    grey = int(np.argmin(np.abs(lightness - _lab(np.array([[[150, 110, 70]]], np.uint8))[0, 0, 0])))
+    centre, axes = (330.4, 178.6), (250.0, 160.0)
+    big = np.zeros((360 * 8, 640 * 8, 3), np.uint8)
+    big[:] = (150, 110, 70)
+    cv2.ellipse(big, (round(centre[0] * 8 + 3.5), round(centre[1] * 8 + 3.5)),
+                (round(axes[0] * 8), round(axes[1] * 8)), 0, 0, 360, (grey,) * 3, -1)  # fmt: skip
+    img = cv2.resize(big, (640, 360), interpolation=cv2.INTER_AREA).astype(float)
+    img += np.random.default_rng(0).normal(0.0, 3.0, img.shape[:2])[..., None]  # sensor noise
+    lab = _lab(np.clip(img + 0.5, 0, 255).astype(np.uint8))
+    assert abs(float(np.median(lab[180, 300:360, 0])) - float(np.median(lab[:5, :, 0]))) < 0.5
+    platter, _ = find_platter(lab)
+    assert np.hypot(*(np.array(platter.rim.centre) - centre)) < 0.2
+    assert abs(platter.rim.a - axes[0]) < 0.3
+    assert abs(platter.rim.b - axes[1]) < 0.3
+
+
+def _ball(shadow: float, limb: float, centre=(40.3, 38.7), radius=12.0) -> np.ndarray:
+    """A share image: a ball of share 1 (its limb on the +u side fading to ``limb``) and a
+    shadow of share ``shadow`` beside it on the -u side, anti-aliased by supersampling."""
+    n = 8
+    v, u = np.mgrid[0 : 80 * n, 0 : 80 * n] / n + (0.5 / n - 0.5)
+    d = np.hypot(u - centre[0], v - centre[1])
+    ball = d < radius
+    shade = np.clip(1 - (1 - limb) * np.clip((u - centre[0]) / radius + 0.2, 0, 1) * 1.5, limb, 1)
+    crescent = (np.hypot(u - centre[0] + 5, v - centre[1]) < radius) & ~ball
+    share = np.where(ball, shade, np.where(crescent, shadow, 0.0))
+    return share.reshape(80, n, 80, n).mean(axis=(1, 3)).astype(np.float32)
+
+
+@pytest.mark.parametrize(
+    ("shadow", "limb"),
+    [(0.0, 1.0), (0.6, 1.0), (0.0, 0.25), (0.5, 0.25)],
+    ids=["plain", "dark-shadow", "dim-limb", "both"],
+)
+def test_the_outline_finds_the_centre_past_a_shadow_and_a_dim_limb(shadow, limb) -> None:
+    share = _ball(shadow, limb)
+    start = np.array([38.0, 40.0])
+    got = blobs.outline_centre(share, start, 12.0, start)
+    assert np.hypot(*(got - (40.3, 38.7))) < 0.15
+    # the weighted centroid of the blob is pulled by either
+    mask = share > blobs.THRESHOLD
+    v, u = np.nonzero(mask)
+    if shadow or limb < 1:
+        assert np.hypot(u.mean() - 40.3, v.mean() - 38.7) > 0.4
+
+
+def test_a_ball_that_jumps_is_refused(tmp_path) -> None:
+    """The checks on plain data: a track whose ball jumps by 3 of its radii on one frame in
+    seven fails ``ball_path``; the same track without the jumps passes every check."""
+    from test_video import PLATTER, RADIUS, SCENE, SETUP, STATE0
+    from turntable.video.render import render_video
+    from turntable.video.track import track_video
+
+    path = tmp_path / "ball_SYNTHETIC.mp4"
+    render_video(path, "slipping", 2.0, STATE0, SETUP, SCENE, seed=3)
+    track, _ = track_video(path, RADIUS, PLATTER)
+    ball, mark = (next(c for c in track.candidates if c.kind == k) for k in ("ball", "mark"))
+    found = Found(ball, mark, None, None, track.candidates)
+
+    def run(image):
+        area = np.full(len(image), math.pi * (0.5 * RADIUS / PLATTER * track.rim.a) ** 2 * 4)
+        paths = Paths(track.times, image, area, track.mark_image, np.zeros((0, 2)), 1)
+        return check.checks(track.calibration, paths, found, track.rim, track.calibration.pose,
+                            RADIUS, PLATTER, None)  # fmt: skip
+
+    assert check.first_failure(run(track.image)) is None
+    jumped = track.image.copy()
+    jumped[5::7, 0] += 3 * RADIUS / PLATTER * track.rim.a
+    results = run(jumped)
+    assert not results["ball_path"]["passed"]
+    assert "jumps" in check.first_failure(results)

@@ -30,6 +30,9 @@ THRESHOLD = 0.45
 #: In the band about a blob, the share below which a pixel does not count.
 FLOOR = 0.25
 
+#: Colours farther than this, in units of the step from the platter's colour to the
+#: target's, from the line between them have no share.
+OFF_LINE = 0.6
 #: Lightness difference (CIELAB) from which a blob's outline is found in lightness alone.
 EDGE_LIGHTNESS = 15.0
 #: Outline points farther than this (px) from the fitted circle are left out.
@@ -47,9 +50,14 @@ class Colour(NamedTuple):
     platter: NDArray[np.float64]
 
     def share(self, lab_img: NDArray[np.float32]) -> NDArray[np.float32]:
-        step = self.target - self.platter
-        d = (step / float(step @ step)).astype(np.float32)
-        return (lab_img - self.platter.astype(np.float32)) @ d
+        """The share, 0 where a colour lies farther than `OFF_LINE` times the step from the
+        line between the platter's and the target's (a label of another hue, say)."""
+        step = (self.target - self.platter).astype(np.float32)
+        diff = lab_img - self.platter.astype(np.float32)
+        share = diff @ (step / float(step @ step))
+        off = np.linalg.norm(diff - share[..., None] * step, axis=-1)
+        share[off > OFF_LINE * float(np.linalg.norm(step))] = 0.0
+        return share
 
     def edge_share(self, lab_img: NDArray[np.float32]) -> NDArray[np.float32]:
         """The share in lightness alone where lightness makes at least half of the colours'
@@ -57,9 +65,11 @@ class Colour(NamedTuple):
         resolution), else `share`."""
         step = float(self.target[0] - self.platter[0])
         distance = float(np.linalg.norm(self.target - self.platter))
+        share = self.share(lab_img)
         if abs(step) < max(EDGE_LIGHTNESS, 0.5 * distance):
-            return self.share(lab_img)
-        return (lab_img[..., 0] - np.float32(self.platter[0])) / np.float32(step)
+            return share
+        lightness = (lab_img[..., 0] - np.float32(self.platter[0])) / np.float32(step)
+        return np.where(share == 0.0, np.float32(0.0), lightness)
 
 
 class Blob(NamedTuple):
@@ -127,13 +137,34 @@ def blobs(
     return out
 
 
+def merged_ball(
+    picture: Picture, box: tuple[slice, slice], colour: Colour, near: NDArray, radius: float
+) -> Blob | None:
+    """A ball whose blob runs into something of a like colour (a label it crosses): its
+    centre from the outline about ``near`` where at least half the rays find it (the side it
+    touches the label shows as a fall too, to the label's lower share); None if not."""
+    lab_img = lab(picture, box)
+    start = np.array([near[0] - box[1].start, near[1] - box[0].start])
+    h, w = lab_img.shape[:2]
+    if not (0 <= start[0] < w and 0 <= start[1] < h):
+        return None
+    if colour.share(lab_img)[int(start[1]), int(start[0])] < THRESHOLD:
+        return None
+    centre = outline_centre(colour.edge_share(lab_img), start, radius, None, min_points=24)
+    if centre is None or np.hypot(*(centre - start)) > radius:
+        return None
+    return Blob(float(centre[0]) + box[1].start, float(centre[1]) + box[0].start,
+                math.pi * radius**2, False)  # fmt: skip
+
+
 def outline_centre(
     share: NDArray[np.float32],
     start: NDArray,
     radius: float,
-    fallback: NDArray,
+    fallback: NDArray | None,
     rays: int = 48,
-) -> NDArray:
+    min_points: int = 12,
+) -> NDArray | None:
     """The centre (window px) of the circle of radius ``radius`` (px) through a round blob's
     outline.
 
@@ -175,9 +206,9 @@ def outline_centre(
         rr = r[0] + (j + 1) * step
         points.append((start[0] + math.cos(a[k]) * rr, start[1] + math.sin(a[k]) * rr))
     pts = np.array(points).reshape(-1, 2)
-    centre = np.asarray(fallback, float)
+    centre = np.asarray(start, float)
     for _ in range(6):
-        if len(pts) < 12:
+        if len(pts) < min_points:
             return fallback
         for _ in range(3):  # Gauss-Newton for the centre of a circle of known radius
             d = pts - centre

@@ -32,6 +32,10 @@ from turntable.video.platter import Ellipse
 PRIOR_LOG_FOCAL = 1.0
 PRIOR_ROLL = 1.0
 PRIOR_READOUT = 2.0
+#: Rows are read from the top down within this many frame intervals: where the readout is
+#: hard to tell from the camera's tilt (a camera looking nearly straight down), the bounds
+#: keep it physical.
+MAX_READOUT = 1.2
 
 
 class Calibration(NamedTuple):
@@ -191,7 +195,7 @@ def _fit(prob: _Problem, b0: float, roll0: float):
     slope, phase = np.polyfit(prob.mark_t, ang, 1)
     theta = np.r_[theta6, math.log(np.median(np.hypot(q[:, 0], q[:, 1]))), phase, slope, 0.0]
     for _ in range(2):
-        fit = least_squares(prob.all, theta, method="lm", x_scale="jac")
+        fit = _solve(prob, theta)
         theta = fit.x
         # the rim seen on several frames is one edge: its points count as those of one frame,
         # widened for their correlation along the rim
@@ -200,7 +204,16 @@ def _fit(prob: _Problem, b0: float, roll0: float):
         widen = math.sqrt(prob.rim_frames * (1 + r1) / (1 - min(r1, 0.99)))
         prob.sigma_rim *= max(float(np.sqrt(np.mean(rim_res**2))), 1e-3) * (widen if _ else 1.0)
         prob.sigma_mark *= max(float(np.sqrt(np.mean(prob.mark(theta) ** 2))), 1e-3)
-    return least_squares(prob.all, theta, method="lm", x_scale="jac")
+    return _solve(prob, theta)
+
+
+def _solve(prob: _Problem, theta: NDArray):
+    """Least squares with the readout between 0 and `MAX_READOUT` frame intervals."""
+    lo, hi = np.full(theta.size, -np.inf), np.full(theta.size, np.inf)
+    lo[9], hi[9] = 0.0, MAX_READOUT
+    theta = theta.copy()
+    theta[9] = min(max(theta[9], 1e-9), MAX_READOUT - 1e-9)
+    return least_squares(prob.all, theta, method="trf", bounds=(lo, hi), x_scale="jac")
 
 
 def calibrate(

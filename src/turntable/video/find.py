@@ -61,6 +61,8 @@ class Candidate(NamedTuple):
     elongation: float
     #: distance from the axis in units of P if it turns rigidly with the platter, else nan
     turns_at: float = math.nan
+    #: a part of a larger region, split from it by colour
+    split: bool = False
     kind: str = "other"  # "ball", "mark", "other"
 
 
@@ -97,6 +99,58 @@ def _components(lab_img, platter: Platter, allowed, threshold):
     mask = ((dist > threshold) & allowed).astype(np.uint8)
     _, labels, stats, centroids = cv2.connectedComponentsWithStats(mask, connectivity=8)
     return dist, labels, stats[1:], centroids[1:]
+
+
+def _parts(lab_img, platter: Platter, allowed, threshold: float, largest: float):
+    """The parts of a CIELAB window that differ from the platter: (window of the part's
+    box, its mask there, the box's corner (u, v)), the 40 largest components, each larger
+    than any ball split by colour (`_split`)."""
+    _, labels, stats, _ = _components(lab_img, platter, allowed, threshold)
+    for i in np.argsort(-stats[:, 4])[:40]:
+        x, y, w, h, area = stats[i]
+        if area < 3:
+            continue
+        region = (labels[y : y + h, x : x + w] == i + 1).astype(np.uint8)
+        sub = lab_img[y : y + h, x : x + w]
+        for part in _split(sub, region) if area > largest else [region]:
+            if part.sum() >= 3:
+                yield sub, part, np.array([x, y], float), area > largest
+
+
+def _candidate(lab_img, region, platter: Platter, origin) -> Candidate | None:
+    """A region of a CIELAB window as a candidate: its centroid, area, shape, and the colour
+    of its more distinct half (a ball's, not its shadow's)."""
+    area = int(region.sum())
+    if area < 3:
+        return None
+    pix = lab_img[region.astype(bool)]
+    dist = np.linalg.norm(pix - platter.colour.astype(np.float32), axis=1)
+    colour = np.median(pix[dist >= np.median(dist)], axis=0).astype(float)
+    v, u = np.nonzero(region)
+    return Candidate(
+        float(u.mean() + origin[0]),
+        float(v.mean() + origin[1]),
+        float(area),
+        colour,
+        float(np.linalg.norm(colour - platter.colour)),
+        _shape(region),
+    )
+
+
+def _split(lab_img, region) -> list[NDArray[np.uint8]]:
+    """A region larger than any ball (a ball touching a label, say) split by colour: three
+    k-means clusters of its CIELAB colours, each cut into its connected parts."""
+    pix = lab_img[region.astype(bool)].astype(np.float32)
+    criteria = (cv2.TERM_CRITERIA_EPS + cv2.TERM_CRITERIA_MAX_ITER, 20, 0.5)
+    cv2.setRNGSeed(0)
+    _, which, _ = cv2.kmeans(pix, 3, None, criteria, 2, cv2.KMEANS_PP_CENTERS)
+    cluster = np.full(region.shape, -1, np.int32)
+    cluster[region.astype(bool)] = which.ravel()
+    parts = []
+    for k in range(3):
+        n, labels = cv2.connectedComponents((cluster == k).astype(np.uint8), connectivity=8)
+        parts += [(labels == i).astype(np.uint8) for i in range(1, n)]
+    return parts
 
 
 def _shape(region: NDArray[np.uint8]) -> float:
@@ -151,24 +205,15 @@ def find(
     ring = (rim.mask(shape, 0.9) & ~rim.mask(shape, 0.35))[box]
     noise = float(np.median(np.linalg.norm(lab0[ring] - platter.colour.astype(np.float32), axis=1)))
     threshold = max(CONTRAST_NOISE * noise, MIN_CONTRAST)
-    _, labels, stats, centroids = _components(lab0, platter, allowed[box], threshold)
+    largest = AREA_RANGE[1] * _area_at(pose, rim.centre, ball_radius)
     paths = []
-    order = np.argsort(-stats[:, 4])[:40]
-    for i in order:
-        x, y, w, h, area = stats[i]
-        if area < 3:
-            continue
-        region = (labels[y : y + h, x : x + w] == i + 1).astype(np.uint8)
-        pix = lab0[y : y + h, x : x + w][region.astype(bool)]
-        dist = np.linalg.norm(pix - platter.colour.astype(np.float32), axis=1)
-        colour = np.median(pix[dist >= np.median(dist)], axis=0).astype(float)
-        uv = centroids[i] + origin
-        contrast = float(np.linalg.norm(colour - platter.colour))
-        c = Candidate(float(uv[0]), float(uv[1]), float(area), colour, contrast, _shape(region))
-        p = _Path(c)
-        p.t.append(probe[0][0])
-        p.uv.append((c.u, c.v))
-        paths.append(p)
+    for sub, part, corner, split in _parts(lab0, platter, allowed[box], threshold, largest):
+        c = _candidate(sub, part, platter, origin + corner)
+        if c is not None:
+            c = c._replace(split=split)
+            paths.append(_Path(c))
+            paths[-1].t.append(probe[0][0])
+            paths[-1].uv.append((c.u, c.v))
     seeded = {}
     for option, at in (("--ball-at", ball_at), ("--mark-at", mark_at)):
         if at is not None:
@@ -184,8 +229,14 @@ def find(
             paths[-1].t.append(probe[0][0])
             paths[-1].uv.append((c.u, c.v))
     for t, picture in probe[1:]:
-        _, _, st, cen = _components(lab(picture, box), platter, allowed[box], threshold)
-        cen = cen + origin
+        found = [
+            (*(np.argwhere(part)[:, ::-1].mean(axis=0) + origin + corner), part.sum())
+            for _, part, corner, _ in _parts(
+                lab(picture, box), platter, allowed[box], threshold, largest
+            )
+        ]
+        st = np.array(found, float).reshape(-1, 3)
+        cen, areas = st[:, :2], st[:, 2]
         for p in paths:
             if len(p.uv) < len(p.t):
                 continue  # lost: not followed further
@@ -196,7 +247,7 @@ def find(
                 step = RATE_RANGE[1] * arm * (t - p.t[0])
             gate = 3.0 + 1.5 * math.sqrt(p.c.area / math.pi) + step
             d = np.hypot(cen[:, 0] - near[0], cen[:, 1] - near[1])
-            ok = (d < gate) & (st[:, 4] > 0.3 * p.c.area) & (st[:, 4] < 3.3 * p.c.area)
+            ok = (d < gate) & (areas > 0.3 * p.c.area) & (areas < 3.3 * p.c.area)
             if ok.any():
                 j = int(np.argmin(np.where(ok, d, np.inf)))
                 p.uv.append((float(cen[j, 0]), float(cen[j, 1])))
@@ -238,8 +289,15 @@ def find(
         ]
         others = [c if i != m and not rigid[i] else None for i, c in enumerate(candidates)]
         ball = seeded.get("--ball-at")
-        if ball is None:
-            ball = _choose_ball(others, pose, ball_radius)
+        # of those followed over the probe and whole, if any, else split, else all
+        for keep in (
+            lambda i, c: planes[i] is not None and not c.split,
+            lambda i, c: planes[i] is not None,
+            lambda i, c: True,
+        ):
+            if ball is None:
+                chosen = [c if c is not None and keep(i, c) else None for i, c in enumerate(others)]
+                ball = _choose_ball(chosen, pose, ball_radius)
         if ball is not None:
             break
     if ball is None:

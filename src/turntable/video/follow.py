@@ -2,7 +2,8 @@
 
 Each is looked for in a window about where its last steps predict it (the mark along its
 circle about the rim's centre), as a blob of its own colour (`turntable.video.blobs`) of
-about its own size.  Where the mark passes next to the ball, so that their images may touch,
+about its own size; a ball whose blob runs into a label of a like colour, by its
+outline.  Where the mark passes next to the ball, so that their images may touch,
 neither is measured on that frame; a frame where the ball is not found is a gap, never a
 guessed position.  The rim's points are collected on `RIM_FRAMES` frames spread over the
 video.
@@ -18,7 +19,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from turntable.video import camera
-from turntable.video.blobs import Blob, Colour, blobs
+from turntable.video.blobs import Blob, Colour, blobs, merged_ball
 from turntable.video.camera import Pose
 from turntable.video.decode import Picture, VideoError, lab, window
 from turntable.video.find import Found
@@ -163,18 +164,15 @@ def follow(
         v = ball.speed()
         half = 2.5 * r_px + 4 + (ball.misses + 1) * (0 if v is None else v + 2 * r_px)
         box = window(tuple(near), half, picture.shape)
+        radius = _image_radius(pose, near, ball_radius)
         got = _pick(
-            blobs(
-                picture,
-                box,
-                found.ball_colour,
-                allowed,
-                outline=_image_radius(pose, near, ball_radius),
-            ),
+            blobs(picture, box, found.ball_colour, allowed, outline=radius),
             near,
             ball_area or found.ball.area,
-            BALL_AREA if ball_area else (0.2, 5.0),
+            BALL_AREA if ball_area else (0.4, 2.5),
         )
+        if got is None:
+            got = merged_ball(picture, box, found.ball_colour, near, radius)
         if got is not None and ball_area is None:
             ball_area = got.area
         if got is not None and got.touches:

@@ -39,7 +39,6 @@ AMBIENT = 0.5
 SPECULAR, SHININESS = 0.8, 60.0
 #: Samples in time over the shutter's opening (motion blur).
 BLUR_SAMPLES = 4
-
 RGB = tuple[float, float, float]
 
 

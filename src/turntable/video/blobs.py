@@ -74,12 +74,14 @@ class Colour(NamedTuple):
 
 class Blob(NamedTuple):
     """A blob: centre (u, v) and area (filled, weighted) in px; whether it touches a pixel
-    outside the allowed region or the window's cut by the image's edge."""
+    outside the allowed region or the window's cut by the image's edge; whether it runs out
+    of the window (its area and centre are then not its own)."""
 
     u: float
     v: float
     area: float
     touches: bool
+    cut: bool = False
 
 
 def blobs(
@@ -130,10 +132,11 @@ def blobs(
             or (y + h + v0 >= height)
         )
         centre = np.array([(wt * uu).sum(), (wt * vv).sum()]) / total
-        if outline and 0.3 < total / (math.pi * outline**2) < 3.0:
+        if outline and 0.4 < total / (math.pi * outline**2) < 2.5:
             edge = colour.edge_share(lab_img)
             centre = outline_centre(edge, centre, outline, centre)
-        out.append(Blob(float(centre[0]) + u0, float(centre[1]) + v0, total, touches))
+        cut = x == 0 or y == 0 or x + w >= mask.shape[1] or y + h >= mask.shape[0]
+        out.append(Blob(float(centre[0]) + u0, float(centre[1]) + v0, total, touches, cut))
     return out
 
 
@@ -141,8 +144,9 @@ def merged_ball(
     picture: Picture, box: tuple[slice, slice], colour: Colour, near: NDArray, radius: float
 ) -> Blob | None:
     """A ball whose blob runs into something of a like colour (a label it crosses): its
-    centre from the outline about ``near`` where at least half the rays find it (the side it
-    touches the label shows as a fall too, to the label's lower share); None if not."""
+    centre from the outline about ``near`` where three rays in four find it (the side it
+    touches the label shows as a fall too, to the label's lower share), within R / 4 of
+    ``near``; None if not (a label of the ball's own colour hides that side)."""
     lab_img = lab(picture, box)
     start = np.array([near[0] - box[1].start, near[1] - box[0].start])
     h, w = lab_img.shape[:2]
@@ -150,8 +154,8 @@ def merged_ball(
         return None
     if colour.share(lab_img)[int(start[1]), int(start[0])] < THRESHOLD:
         return None
-    centre = outline_centre(colour.edge_share(lab_img), start, radius, None, min_points=24)
-    if centre is None or np.hypot(*(centre - start)) > radius:
+    centre = outline_centre(colour.edge_share(lab_img), start, radius, None, min_points=36)
+    if centre is None or np.hypot(*(centre - start)) > 0.25 * radius:
         return None
     return Blob(float(centre[0]) + box[1].start, float(centre[1]) + box[0].start,
                 math.pi * radius**2, False)  # fmt: skip

@@ -29,6 +29,8 @@ from turntable.video.platter import Ellipse, Platter, rim_points_again
 RIM_FRAMES = 12
 #: The ball's blob is taken within these factors of its area on the first frame.
 BALL_AREA = (0.5, 1.7)
+#: A lost ball is looked for where its last step leads over at most this many frames.
+COAST = 5
 #: The mark's blob within these factors of its own.
 MARK_AREA = (0.25, 4.0)
 
@@ -55,9 +57,10 @@ class _State:
         self.misses = 0
 
     def predict(self) -> NDArray:
+        """Where the last step leads (over at most `COAST` frames)."""
         if self.step is None:
             return self.last
-        return self.last + (self.misses + 1) * self.step
+        return self.last + min(self.misses + 1, COAST) * self.step
 
     def speed(self) -> float | None:
         """Px per frame, once known."""
@@ -163,10 +166,15 @@ def follow(
         near = ball.predict()
         v = ball.speed()
         half = 2.5 * r_px + 4 + (ball.misses + 1) * (0 if v is None else v + 2 * r_px)
+        half = min(half, rim.a)  # a ball lost for long: looked for about where it was
         box = window(tuple(near), half, picture.shape)
         radius = _image_radius(pose, near, ball_radius)
         got = _pick(
-            blobs(picture, box, found.ball_colour, allowed, outline=radius),
+            [
+                b
+                for b in blobs(picture, box, found.ball_colour, allowed, outline=radius)
+                if b.touches or not b.cut
+            ],
             near,
             ball_area or found.ball.area,
             BALL_AREA if ball_area else (0.4, 2.5),

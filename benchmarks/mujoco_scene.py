@@ -31,14 +31,13 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from turntable.film import Film, Setup, check_setup
+from turntable.film import Film, Setup
 from turntable.fit import positions
-from turntable.video.decode import yuv420
+from turntable.video import _scene
+from turntable.video.decode import SYNTHETIC, write_video
 
 __all__ = ["SYNTHETIC", "MujocoRendered", "MujocoScene", "project", "render_mujoco"]
 
-#: Word that the file name and the metadata of every rendered video carry.
-SYNTHETIC = "SYNTHETIC"
 
 RGBA = tuple[float, float, float, float]
 
@@ -344,19 +343,12 @@ def render_mujoco(
         the frame times (at the middle of the exposure if blurred), ``synthetic=True``;
         ``omega``; ``tilt_deg``; ``camera``.
     """
-    import av
 
     _gl_default()
     import mujoco
 
     path = Path(path)
-    if SYNTHETIC not in path.name:
-        raise ValueError(f"a rendered video's file name must contain {SYNTHETIC}; got {path.name}")
-    setup = check_setup(setup)
-    if setup.axis != (0.0, 0.0):
-        raise ValueError(
-            "the axis of a rendered turntable is the origin: setup.axis must be (0, 0)"
-        )
+    setup = _scene.check_output(path, setup)
     scene = scene or MujocoScene()
     width, height = scene.size
     if width % 2 or height % 2:
@@ -389,44 +381,27 @@ def render_mujoco(
                          * np.float32(scene.noise)).astype(np.int16)  # fmt: skip
         noise = np.repeat(noise, 3, axis=2)
     renderer = mujoco.Renderer(mj, height, width)
-    tmp = path.with_name(f".{path.name}.partial{path.suffix}")
+
+    def frame(i: int, ti: float) -> NDArray[np.uint8]:
+        acc = np.zeros((height, width, 3), dtype=np.float32)
+        for j in range(k):
+            angle = sign * setup.omega * (ti + offsets[j])
+            data.mocap_quat[platter_id] = (math.cos(angle / 2), 0, 0, math.sin(angle / 2))
+            data.mocap_pos[ball_id] = (ball[i, j, 0], ball[i, j, 1], setup.radius)
+            mujoco.mj_forward(mj, data)
+            renderer.update_scene(data, camera="cam")
+            acc += renderer.render()
+        img = np.round(acc / k).astype(np.int16) if k > 1 else acc.astype(np.int16)
+        if noise is not None:
+            dv, du = rng.integers(0, height), rng.integers(0, width)
+            img += noise[dv : dv + height, du : du + width]
+        return np.clip(img, 0, 255).astype(np.uint8)
+
     try:
-        with av.open(str(tmp), "w") as out:
-            out.metadata["title"] = f"{SYNTHETIC} turntable video"
-            out.metadata["comment"] = (
-                f"{SYNTHETIC}: rendered by MuJoCo {mujoco.__version__} "
-                f"(benchmarks/mujoco_scene.py) from the exact solution of the {model} model "
-                f"({coefficient!r}), not filmed"
-            )
-            stream = out.add_stream("libx264", rate=Fraction(scene.fps).limit_denominator(10000))
-            stream.width, stream.height = width, height
-            stream.pix_fmt = "yuv420p"
-            stream.time_base = time_base
-            stream.codec_context.time_base = time_base
-            stream.options = {"crf": str(scene.crf), "preset": "ultrafast"}
-            for i, ti in enumerate(t):
-                acc = np.zeros((height, width, 3), dtype=np.float32)
-                for j in range(k):
-                    angle = sign * setup.omega * (ti + offsets[j])
-                    data.mocap_quat[platter_id] = (math.cos(angle / 2), 0, 0, math.sin(angle / 2))
-                    data.mocap_pos[ball_id] = (ball[i, j, 0], ball[i, j, 1], setup.radius)
-                    mujoco.mj_forward(mj, data)
-                    renderer.update_scene(data, camera="cam")
-                    acc += renderer.render()
-                img = np.round(acc / k).astype(np.int16) if k > 1 else acc.astype(np.int16)
-                if noise is not None:
-                    dv, du = rng.integers(0, height), rng.integers(0, width)
-                    img += noise[dv : dv + height, du : du + width]
-                img = np.clip(img, 0, 255).astype(np.uint8)
-                frame = av.VideoFrame.from_ndarray(yuv420(img), format="yuv420p")
-                frame.pts = round(ti / time_base)
-                frame.time_base = time_base
-                out.mux(stream.encode(frame))
-            out.mux(stream.encode(None))
-        os.replace(tmp, path)
-    except BaseException:
-        tmp.unlink(missing_ok=True)
-        raise
+        write_video(path, ((ti, frame(i, ti)) for i, ti in enumerate(t)), scene.fps,
+                    (width, height), scene.crf,
+                    f"rendered by MuJoCo {mujoco.__version__} (benchmarks/mujoco_scene.py) from "
+                    f"the exact solution of the {model} model ({coefficient!r})")  # fmt: skip
     finally:
         renderer.close()
     return MujocoRendered(Film(t + exposure / 2, xy[:, 0], xy[:, 1], synthetic=True),

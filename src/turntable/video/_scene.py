@@ -5,13 +5,16 @@ from __future__ import annotations
 
 import math
 import numbers
+from pathlib import Path
 from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from turntable.film import Setup, check_setup
 from turntable.video import camera
 from turntable.video.camera import Pose
+from turntable.video.decode import SYNTHETIC
 
 #: The colour fields of a Scene.
 COLOURS = ("ball_colour", "platter_colour", "label_colour", "mark_colour", "table_colour")
@@ -38,6 +41,19 @@ RANGES = {
     "flicker_hz": (1.0, 1000.0),
     "flicker_phase_deg": (-360.0, 360.0),
 }
+
+
+def check_output(path: Path, setup: Setup) -> Setup:
+    """A rendered video's file name says SYNTHETIC, and its turntable's axis is the origin;
+    returns the checked setup."""
+    if SYNTHETIC not in path.name:
+        raise ValueError(f"a rendered video's file name must contain {SYNTHETIC}; got {path.name}")
+    setup = check_setup(setup)
+    if setup.axis != (0.0, 0.0):
+        raise ValueError(
+            "the axis of a rendered turntable is the origin: setup.axis must be (0, 0)"
+        )
+    return setup
 
 
 def rgb(value: Any, name: str) -> NDArray[np.float64]:

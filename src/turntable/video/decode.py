@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Iterator
+from fractions import Fraction
 from pathlib import Path
 from typing import Any, NamedTuple
 
@@ -210,3 +211,39 @@ def yuv420(rgb_img: NDArray[np.uint8]) -> NDArray[np.uint8]:
         planes.append(0.25 * left + 0.5 * rows[:, 0::2] + 0.25 * rows[:, 1::2])
     out = np.concatenate([planes[0].ravel(), planes[1].ravel(), planes[2].ravel()])
     return np.clip(out + 0.5, 0, 255).astype(np.uint8).reshape(3 * h // 2, w)
+
+
+def write_video(
+    path: Path,
+    frames: Iterator[tuple[float, NDArray[np.uint8]]],
+    fps: float,
+    size: tuple[int, int],
+    crf: int,
+    comment: str,
+) -> None:
+    """Write (time in s, RGB image) frames as H.264 (libx264, `yuv420`, times to 1/90000 s)
+    with the metadata of a SYNTHETIC video: under a temporary name, renamed when complete."""
+    import av
+
+    time_base = Fraction(1, 90000)
+    tmp = path.with_name(f".{path.name}.partial{path.suffix}")
+    try:
+        with av.open(str(tmp), "w") as out:
+            out.metadata["title"] = f"{SYNTHETIC} turntable video"
+            out.metadata["comment"] = f"{SYNTHETIC}: {comment}, not filmed"
+            stream = out.add_stream("libx264", rate=Fraction(fps).limit_denominator(10000))
+            stream.width, stream.height = size
+            stream.pix_fmt = "yuv420p"
+            stream.time_base = time_base
+            stream.codec_context.time_base = time_base
+            stream.options = {"crf": str(crf), "preset": "ultrafast"}
+            for t, img in frames:
+                frame = av.VideoFrame.from_ndarray(yuv420(img), format="yuv420p")
+                frame.pts = round(t / time_base)
+                frame.time_base = time_base
+                out.mux(stream.encode(frame))
+            out.mux(stream.encode(None))
+        os.replace(tmp, path)
+    except BaseException:
+        tmp.unlink(missing_ok=True)
+        raise

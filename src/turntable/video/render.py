@@ -23,16 +23,14 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from turntable.film import Film, Setup, check_setup
+from turntable.film import Film, Setup
 from turntable.fit.models import positions
 from turntable.video import _scene, camera
 from turntable.video.camera import Pose
-from turntable.video.decode import yuv420
+from turntable.video.decode import SYNTHETIC, write_video
 
 __all__ = ["SYNTHETIC", "Rendered", "Scene", "render_video"]
 
-#: Word that the file name and the metadata of every rendered video carry.
-SYNTHETIC = "SYNTHETIC"
 #: Share of the light on the ball that is ambient (the rest is Lambert's, from the light).
 AMBIENT = 0.5
 #: Peak of a specular ball's highlight (share of white) and its Blinn-Phong exponent.
@@ -421,16 +419,9 @@ def render_video(
     >>> print(truth.film.t.size, "frames", path.stat().st_size > 0)
     16 frames True
     """
-    import av
 
     path = Path(path)
-    if SYNTHETIC not in path.name:
-        raise ValueError(f"a rendered video's file name must contain {SYNTHETIC}; got {path.name}")
-    setup = check_setup(setup)
-    if setup.axis != (0.0, 0.0):
-        raise ValueError(
-            "the axis of a rendered turntable is the origin: setup.axis must be (0, 0)"
-        )
+    setup = _scene.check_output(path, setup)
     scene = scene or Scene()
     _scene.check(scene)
     pose = pose or default_pose(scene)
@@ -469,32 +460,13 @@ def render_video(
             f"{scene.platter_radius - setup.radius:.4g} m)"
         )
     ball[..., 1] *= sign
-    tmp = path.with_name(f".{path.name}.partial{path.suffix}")
-    try:
-        with av.open(str(tmp), "w") as out:
-            out.metadata["title"] = f"{SYNTHETIC} turntable video"
-            out.metadata["comment"] = (
-                f"{SYNTHETIC}: rendered by turntable.video.render from the exact solution of the "
-                f"{model} model ({coefficient!r}), not filmed"
-            )
-            stream = out.add_stream("libx264", rate=Fraction(scene.fps).limit_denominator(10000))
-            stream.width, stream.height = scene.size
-            stream.pix_fmt = "yuv420p"
-            stream.time_base = time_base
-            stream.codec_context.time_base = time_base
-            stream.options = {"crf": str(scene.crf), "preset": "ultrafast"}
-            hidden = set(scene.hidden)
-            for i, ti in enumerate(t):
-                seen = None if i in hidden else ball[i]
-                speed = None if velocity is None else velocity[i]
-                img = renderer.frame(ti, seen, speed, delay[i])
-                frame = av.VideoFrame.from_ndarray(yuv420(img), format="yuv420p")
-                frame.pts = round(ti / time_base)
-                frame.time_base = time_base
-                out.mux(stream.encode(frame))
-            out.mux(stream.encode(None))
-        os.replace(tmp, path)
-    except BaseException:
-        tmp.unlink(missing_ok=True)
-        raise
+    hidden = set(scene.hidden)
+    frames = (
+        (ti, renderer.frame(ti, None if i in hidden else ball[i],
+                            None if velocity is None else velocity[i], delay[i]))
+        for i, ti in enumerate(t)
+    )  # fmt: skip
+    write_video(path, frames, scene.fps, scene.size, scene.crf,
+                f"rendered by turntable.video.render from the exact solution of the {model} "
+                f"model ({coefficient!r})")  # fmt: skip
     return Rendered(pose, Film(t, xy[:, 0], xy[:, 1], synthetic=True), setup.omega)

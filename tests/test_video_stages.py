@@ -70,28 +70,55 @@ def test_the_outline_finds_the_centre_past_a_shadow_and_a_dim_limb(shadow, limb)
         assert np.hypot(u.mean() - 40.3, v.mean() - 38.7) > 0.4
 
 
-def test_a_ball_that_jumps_is_refused(tmp_path) -> None:
-    """The checks on plain data: a track whose ball jumps by 3 of its radii on one frame in
-    seven fails ``ball_path``; the same track without the jumps passes every check."""
+@pytest.fixture(scope="module")
+def tracked(tmp_path_factory):
+    """A tracked video, and the checks run on its data with changes."""
     from test_video import PLATTER, RADIUS, SCENE, SETUP, STATE0
     from turntable.video.render import render_video
     from turntable.video.track import track_video
 
-    path = tmp_path / "ball_SYNTHETIC.mp4"
-    render_video(path, "slipping", 2.0, STATE0, SETUP, SCENE, seed=3)
+    path = tmp_path_factory.mktemp("stages") / "ball_SYNTHETIC.mp4"
+    render_video(path, "slipping", 2.0, STATE0, SETUP, SCENE._replace(duration=3.0), seed=3)
     track, _ = track_video(path, RADIUS, PLATTER)
     ball, mark = (next(c for c in track.candidates if c.kind == k) for k in ("ball", "mark"))
     found = Found(ball, mark, None, None, track.candidates)
+    area = np.full(len(track.times), math.pi * (RADIUS / PLATTER * track.rim.a) ** 2)
 
-    def run(image):
-        area = np.full(len(image), math.pi * (0.5 * RADIUS / PLATTER * track.rim.a) ** 2 * 4)
-        paths = Paths(track.times, image, area, track.mark_image, np.zeros((0, 2)), 1)
+    def run(image=track.image, marks=track.mark_image):
+        paths = Paths(track.times, image, area, marks, np.zeros((0, 2)), 1)
         return check.checks(track.calibration, paths, found, track.rim, track.calibration.pose,
                             RADIUS, PLATTER, None)  # fmt: skip
 
-    assert check.first_failure(run(track.image)) is None
-    jumped = track.image.copy()
-    jumped[5::7, 0] += 3 * RADIUS / PLATTER * track.rim.a
-    results = run(jumped)
-    assert not results["ball_path"]["passed"]
-    assert "jumps" in check.first_failure(results)
+    return track, run
+
+
+def test_the_checks_pass_on_a_right_track(tracked) -> None:
+    _, run = tracked
+    assert check.first_failure(run()) is None
+
+
+@pytest.mark.parametrize(
+    ("name", "change"),
+    [
+        pytest.param("ball_path", "jumps", id="ball-jumps"),
+        pytest.param("axis", "shift", id="mark-circle-off-the-axis"),
+        pytest.param("tilt", "squash", id="mark-circle-under-another-tilt"),
+    ],
+)
+def test_a_check_fails_on_what_it_checks(tracked, name, change) -> None:
+    """The ball jumping by 3 radii on one frame in seven; the mark's images moved by a tenth
+    of the platter's radius; the mark's circle squashed by 10 % across: each refused by its
+    own check, with one line."""
+    track, run = tracked
+    px = track.rim.a  # px per P
+    image, marks = track.image.copy(), track.mark_image.copy()
+    if change == "jumps":
+        image[5::7, 0] += 3 * 0.008 / 0.15 * px
+    elif change == "shift":
+        marks[:, 0] += 0.1 * px
+    else:
+        centre = np.nanmean(marks, axis=0)
+        marks[:, 1] = centre[1] + 0.9 * (marks[:, 1] - centre[1])
+    results = run(image, marks)
+    assert not results[name]["passed"]
+    assert check.first_failure(results).count("\n") == 0

@@ -17,7 +17,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-__all__ = ["Pose", "back_project", "project", "sphere_centre"]
+__all__ = ["Pose", "back_project", "image_radius", "project", "sphere_centre"]
 
 
 class Pose(NamedTuple):
@@ -127,6 +127,24 @@ def rays(pose: Pose, u: ArrayLike, v: ArrayLike) -> NDArray[np.float64]:
     )
     d = d @ rotation(pose)
     return d / np.linalg.norm(d, axis=-1, keepdims=True)
+
+
+def image_radius(pose: Pose, pixels: ArrayLike, radius: float) -> NDArray[np.float64]:
+    """Radius (px) of the image of a sphere of radius ``radius`` whose centre, in the plane
+    z = radius, is seen at ``pixels`` (u, v): f radius / its distance from the camera.
+
+    Examples
+    --------
+    A ball of radius 1 cm, 40 cm below a camera of focal length 1000 px looking down at it:
+
+    >>> from turntable.video import camera
+    >>> pose = camera.Pose(1000.0, 0.0, 0.0, (0.0, 0.0), 0.4, (1280, 720))
+    >>> print(camera.image_radius(pose, [pose.principal], 0.01).round(3))
+    [25.641]
+    """
+    xy = back_project(pose, np.atleast_2d(np.asarray(pixels, dtype=float)), height=radius)
+    depth = np.linalg.norm(np.column_stack([xy, np.full(len(xy), radius)]) - centre(pose), axis=1)
+    return pose.focal * radius / depth
 
 
 def sphere_centre(

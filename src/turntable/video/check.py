@@ -150,9 +150,7 @@ def checks(
         jumps <= 0.02,
         f"the ball jumps on {100 * jumps:.2g} % of the frames",
     )
-    centres = np.c_[xy, np.full(len(xy), ball_radius)]
-    depth = np.linalg.norm(centres - camera.centre(cal.pose), axis=1)
-    predicted = float(np.median(cal.pose.focal * ball_radius / depth))
+    predicted = float(np.median(camera.image_radius(cal.pose, paths.ball[seen], ball_radius)))
     measured = math.sqrt(float(np.nanmedian(paths.ball_area)) / math.pi)
     ratio = measured / predicted
     put(

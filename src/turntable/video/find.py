@@ -25,7 +25,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from turntable.video import camera
-from turntable.video.blobs import Colour
+from turntable.video.blobs import THRESHOLD, Colour
 from turntable.video.camera import Pose
 from turntable.video.decode import Picture, VideoError, lab, window
 from turntable.video.platter import Platter
@@ -301,8 +301,7 @@ def find(
         if ball is not None:
             break
     if ball is None:
-        centre = Candidate(*pose.principal, 0.0, np.zeros(3), 0.0, 1.0)
-        expected = _expected_area(pose, centre, ball_radius)
+        expected = _area_at(pose, pose.principal, ball_radius)
         raise VideoError(
             f"no ball found on the first frame: nothing round of about {expected:.0f} px (a ball "
             "of the given radius at the rim's scale) differs from the platter and moves on its "
@@ -338,14 +337,9 @@ def _turning(t: NDArray, z: NDArray, rate: float | None = None) -> tuple[float, 
     return rate, c, float(np.sqrt(np.mean(np.abs(z - c * np.exp(1j * rate * t)) ** 2)))
 
 
-def _expected_area(pose: Pose, c: Candidate, ball_radius: float) -> float:
-    xy = camera.back_project(pose, [[c.u, c.v]], height=ball_radius)[0]
-    depth = float(np.linalg.norm(np.r_[xy, ball_radius] - camera.centre(pose)))
-    return math.pi * (pose.focal * ball_radius / depth) ** 2
-
-
 def _area_at(pose: Pose, uv: tuple[float, float], ball_radius: float) -> float:
-    return _expected_area(pose, Candidate(uv[0], uv[1], 0.0, np.zeros(3), 0.0, 1.0), ball_radius)
+    """Area (px) of the image of a ball of radius R seen at ``uv``."""
+    return math.pi * float(camera.image_radius(pose, [uv], ball_radius)[0]) ** 2
 
 
 def _seeded(lab_img, origin, platter: Platter, at, reach: float) -> Candidate | None:
@@ -361,7 +355,7 @@ def _seeded(lab_img, origin, platter: Platter, at, reach: float) -> Candidate | 
     box = window((u, v), reach, (h, w))
     share = Colour(colour, platter.colour).share(lab_img[box])
     _, labels, stats, centroids = cv2.connectedComponentsWithStats(
-        (share > 0.45).astype(np.uint8), connectivity=8
+        (share > THRESHOLD).astype(np.uint8), connectivity=8
     )
     i = labels[v - box[0].start, u - box[1].start]
     if i == 0:
@@ -384,7 +378,7 @@ def _choose_ball(others, pose, ball_radius) -> int | None:
         i
         for i, c in enumerate(others)
         if c is not None
-        and AREA_RANGE[0] < c.area / _expected_area(pose, c, ball_radius) < AREA_RANGE[1]
+        and AREA_RANGE[0] < c.area / _area_at(pose, (c.u, c.v), ball_radius) < AREA_RANGE[1]
         and c.elongation < MAX_ELONGATION
     ]
     if not ok:

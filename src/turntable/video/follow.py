@@ -113,13 +113,6 @@ def _pick(found: list[Blob], near: NDArray, area: float, factors) -> Blob | None
     )
 
 
-def _image_radius(pose: Pose, uv: NDArray, ball_radius: float) -> float:
-    """Radius (px) of the image of a ball of radius R whose image is at ``uv``."""
-    xy = camera.back_project(pose, uv[None], height=ball_radius)[0]
-    depth = float(np.linalg.norm(np.r_[xy, ball_radius] - camera.centre(pose)))
-    return pose.focal * ball_radius / depth
-
-
 def _inside_image(b: Blob, shape: tuple[int, int], r_px: float) -> bool:
     m = 1.5 * r_px + 2
     return m < b.u < shape[1] - 1 - m and m < b.v < shape[0] - 1 - m
@@ -168,7 +161,7 @@ def follow(
         half = 2.5 * r_px + 4 + (ball.misses + 1) * (0 if v is None else v + 2 * r_px)
         half = min(half, rim.a)  # a ball lost for long: looked for about where it was
         box = window(tuple(near), half, picture.shape)
-        radius = _image_radius(pose, near, ball_radius)
+        radius = float(camera.image_radius(pose, near, ball_radius)[0])
         got = _pick(
             [
                 b

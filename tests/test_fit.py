@@ -571,6 +571,31 @@ def test_correlated_noise_gets_wider_standard_errors_that_cover(model: str) -> N
     assert np.mean(z < 2) >= 0.85
 
 
+@pytest.mark.parametrize("model", fit.MODELS)
+def test_slowly_drifting_errors_get_standard_errors_that_cover(model: str) -> None:
+    """White noise plus errors that drift as a tracker's do (exponentially correlated over
+    0.3 s, as large as the white part): the fit absorbs part of the drift, and the
+    coefficient lies within 2 of its standard errors in at least 85 % of 40 films (the
+    white and Newey-West formulas alone cover in about 70 %)."""
+    camera = film.Camera(fps=120.0, noise=2e-4, duration=5.0)
+    t = np.arange(0.0, camera.duration, 1.0 / camera.fps)
+    z0 = START if model == "slipping" else tt.no_slip_state(START, RIG.k)
+    xy = fit.positions(model, TRUE[model], z0, t, RIG)
+    rng = np.random.default_rng(11)
+    a = math.exp(-1.0 / (camera.fps * 0.3))
+    z = []
+    for _ in range(40):
+        drift = rng.normal(0.0, camera.noise * math.sqrt(1 - a**2), (t.size, 2))
+        drift[0] = rng.normal(0.0, camera.noise, 2)
+        for i in range(1, t.size):
+            drift[i] += a * drift[i - 1]
+        e = drift + rng.normal(0.0, camera.noise, (t.size, 2))
+        data = film.Film(t, xy[:, 0] + e[:, 0], xy[:, 1] + e[:, 1])
+        f = fit.fit_model(data, RIG, model)
+        z.append((f.coefficient - TRUE[model]) / f.stderr)
+    assert np.mean(np.abs(z) < 2) >= 0.85
+
+
 def test_frame_noise_of_uneven_frames_and_of_a_film_without_noise() -> None:
     """The noise is measured with the frame times as they are (a variable frame rate is no
     noise); a ball tracked to whole millimetres that hardly moves has next to none, and
@@ -621,7 +646,7 @@ def test_axis_off_is_detected_and_fit_axis_recovers() -> None:
     true = RIG._replace(axis=(5e-4, 0.0))
     data = rig_film("rolling_resistance", camera, 4, true)
     biased = fit.fit_model(data, RIG, "rolling_resistance")
-    assert abs(biased.coefficient - 0.02) > 4 * biased.stderr
+    assert abs(biased.coefficient - 0.02) > 3 * biased.stderr
     r = fit.fit_film(data, RIG)
     check = fit.consistency(data, RIG, r)
     assert max(abs(v) for v in check.axis_z) > fit.CONSISTENCY_Z

@@ -7,7 +7,10 @@ larger of two estimates replaces it: that for AR(1) noise of the residuals' lag-
 autocorrelation rho, sqrt((1 + rho) / (1 - rho)) times it, exact for smooth columns of J;
 and Newey-West's with 1.3 sqrt(n) lags (`turntable.fit.parameters`), which also holds for
 longer memory but falls short on few informative frames (the scores of the fitted film sum
-to zero).
+to zero).  Errors that drift slowly, as a tracker's do with where the ball is, can pass the
+test of whiteness and are partly absorbed by the fit; the standard error is at least that for
+white noise plus an exponentially correlated part, both fitted to the residuals' products
+with the absorbed part accounted for (`turntable.fit.parameters.slow_noise`).
 se(c) = c se(ln c) (delta method), and the 95 % interval exp(ln c +- 1.96 se(ln c)),
 which stays positive and is the honest form when se(ln c) is not small.
 
@@ -35,10 +38,12 @@ from turntable.fit.parameters import (
     _full_jacobian,
     _hac_stderr_of,
     _Layout,
+    _slow_stderr_of,
     _layout,
     _stderr_of,
     _unpack,
     newey_west_lags,
+    slow_noise,
 )
 from turntable.fit.results import (
     DECISIVE,
@@ -313,6 +318,9 @@ def fit_model(
                 lags = newey_west_lags(tau.size)
                 ar1 = math.sqrt((1 + rho) / (1 - rho)) if 0 < rho < 1 else 1.0
                 ses = [max(ar1 * se, _hac_stderr_of(jac, i, r, lags)) for i, se in enumerate(ses)]
+            if not exact:
+                drift = slow_noise(jac, residuals)
+                ses = [max(se, _slow_stderr_of(jac, i, drift)) for i, se in enumerate(ses)]
     except (ValueError, np.linalg.LinAlgError):
         ses = [math.nan] * p
     bound = None

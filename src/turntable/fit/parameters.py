@@ -5,7 +5,8 @@ optionally, s = ln(Omega / Omega_given) and the axis (`turntable.fit`).  Standar
 treat the other parameters as nuisance parameters: se(ln c) = s / |(I - P) j_c|, j_c the
 column of ln c and P the projection on the other columns (`_stderr_of`); for residuals
 correlated from frame to frame, the Newey-West estimate from the same projection
-(`_hac_stderr_of`).
+(`_hac_stderr_of`), and that for noise with a slowly drifting part (`slow_noise`,
+`_slow_stderr_of`).
 """
 
 from __future__ import annotations
@@ -15,9 +16,13 @@ from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import NDArray
+from scipy.optimize import nnls
+from scipy.signal import lfilter
 
 from turntable.fit.models import N_STATE, _axis_free, _check_model, _full_state, _solve
 
+#: A slow part of the errors (`slow_noise`) is one this many times its spread for white noise.
+DRIFT_Z = 3.0
 #: Relative step in ln c of the central difference for the coefficient's column of J.
 LOG_STEP = 1e-5
 
@@ -142,3 +147,66 @@ def _hac_stderr_of(jac: NDArray[np.float64], i: int, residuals: NDArray, lags: i
         var += 2.0 * (1.0 - lag / (lags + 1)) * float(g[lag:] @ g[:-lag])
     n_obs, p = jac.shape
     return math.sqrt(max(var, 0.0) * n_obs / (n_obs - p))
+
+
+
+def _kernel_times(v: NDArray[np.float64], a: float) -> NDArray[np.float64]:
+    """K v for K_ij = a^|i - j| along axis 0 (a forward and a backward recursion)."""
+    forward = lfilter([1.0], [1.0, -a], v, axis=0)
+    backward = lfilter([1.0], [1.0, -a], v[::-1], axis=0)[::-1]
+    return forward + backward - v
+
+
+
+def slow_noise(jac: NDArray[np.float64], residuals: NDArray[np.float64]) -> tuple[float, ...]:
+    """Return (white, slow, a): the errors of a fit as white noise of variance ``white``
+    plus a part of variance ``slow`` that drifts, slow a^|i - j| between frames i and j,
+    such as a tracker's errors of the ball's outline, which change with where it is.
+
+    The sums over both coordinates of the residuals' products l frames apart, l = 0 to
+    n / 4, are fitted by their expectations, white s_l(M) + slow s_l(M K M) (M = I - H,
+    H the projection on the columns of ``jac``, which absorbs part of the drift), for 16
+    correlation lengths -1 / ln a from 1 frame to n; the variances by non-negative least
+    squares.  A slow part less than `DRIFT_Z` times its spread for white noise (each sum
+    of 2 n products, of variance 2 n white^2) is none.  ``jac`` has a row per coordinate, frame by frame; ``residuals`` shape (n, 2).
+    """
+    n = residuals.shape[0]
+    lags = max(n // 4, 1)
+    size = 1 << (n + lags).bit_length()
+    q = np.linalg.qr(jac)[0].reshape(n, 2, -1)
+    fq = np.fft.rfft(q, size, axis=0)
+
+    def lag_sums(product: NDArray[np.complex128]) -> NDArray[np.float64]:
+        return np.fft.irfft(product, size)[: lags + 1]
+
+    fr = np.fft.rfft(residuals, size, axis=0)
+    seen = lag_sums(np.sum(np.abs(fr) ** 2, axis=1))
+    white = -lag_sums(np.sum(np.abs(fq) ** 2, axis=(1, 2)))
+    white[0] += 2.0 * n
+    steps = np.arange(lags + 1)
+    best = (math.inf, 0.0, 0.0, 0.0)
+    for length in np.geomspace(1.0, n, 16):
+        a = math.exp(-1.0 / length)
+        kq = _kernel_times(q, a)
+        qkq = np.einsum("icj,ick->jk", q, kq)
+        cross = np.sum(np.conj(fq) * np.fft.rfft(kq, size, axis=0), axis=(1, 2))
+        projected = np.sum(np.conj(fq) * (fq @ qkq), axis=(1, 2))
+        slow = 2.0 * (n - steps) * a**steps - lag_sums(cross + np.conj(cross) - projected)
+        (w, s), loss = nnls(np.column_stack([white, slow]), seen)
+        if loss < best[0]:
+            best = (loss, w, s, a, s * np.linalg.norm(slow[1:]) / (math.sqrt(2.0 * n) * w))
+    _, w, s, a, z = best
+    return (w, s, a) if z > DRIFT_Z else (w, 0.0, a)
+
+
+def _slow_stderr_of(jac: NDArray[np.float64], i: int, noise: tuple[float, ...]) -> float:
+    """se of parameter i for the noise of `slow_noise`: sqrt(q^T (white I + slow K) q), the
+    estimate q . y as in `_hac_stderr_of`, K_ij = a^|i - j| in each coordinate."""
+    white, slow, a = noise
+    q = _own_part(jac, i)
+    norm2 = float(q @ q)
+    if not norm2 > 0:
+        return math.inf
+    q = (q / norm2).reshape(-1, 2)
+    var = white * float(np.sum(q * q)) + slow * float(np.sum(q * _kernel_times(q, a)))
+    return math.sqrt(max(var, 0.0))

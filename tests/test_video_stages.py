@@ -84,12 +84,39 @@ def tracked(tmp_path_factory):
     found = Found(ball, mark, None, None, track.candidates)
     area = np.full(len(track.times), math.pi * (RADIUS / PLATTER * track.rim.a) ** 2)
 
-    def run(image=track.image, marks=track.mark_image):
+    def run(image=track.image, marks=track.mark_image, cal=track.calibration):
         paths = Paths(track.times, image, area, marks, np.zeros((0, 2)), 1)
-        return check.checks(track.calibration, paths, found, track.rim, track.calibration.pose,
+        return check.checks(cal, paths, found, track.rim, track.calibration.pose,
                             RADIUS, PLATTER, None)  # fmt: skip
 
     return track, run
+
+
+def test_the_mark_off_its_circle_is_refused(tracked) -> None:
+    """The camera calibrated again from points of the rim's ellipse and the mark's images:
+    as tracked, the mark lies on its circle; moved by 6 px (rms, at random) on every frame,
+    as a blob that is not fixed to the platter would be, it does not, and only that check
+    fails."""
+    from test_video import PLATTER
+    from turntable.video.calibrate import calibrate
+
+    track, run = tracked
+    rim = track.rim
+    angle = np.linspace(0.0, 2 * math.pi, 200, endpoint=False)
+    c, s = math.cos(rim.angle), math.sin(rim.angle)
+    u, v = rim.a * np.cos(angle), rim.b * np.sin(angle)
+    rim_pts = np.c_[rim.centre[0] + c * u - s * v, rim.centre[1] + s * u + c * v]
+    size = (track.info.width, track.info.height)
+    ok = np.isfinite(track.mark_image[:, 0])
+    t = track.times - track.times[0]
+    jitter = np.random.default_rng(5).normal(0.0, 6.0 / math.sqrt(2), (ok.size, 2))
+    wobble = track.mark_image + jitter
+    for marks, passed in ((track.mark_image, True), (wobble, False)):
+        cal = calibrate(rim_pts, rim, t[ok], marks[ok], size, PLATTER)
+        results = run(marks=marks, cal=cal)
+        assert results["mark_on_circle"]["passed"] is passed
+        failed = [k for k, r in results.items() if not r["passed"]]
+        assert failed == ([] if passed else ["mark_on_circle"])
 
 
 def test_the_checks_pass_on_a_right_track(tracked) -> None:

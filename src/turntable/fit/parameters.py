@@ -149,13 +149,11 @@ def _hac_stderr_of(jac: NDArray[np.float64], i: int, residuals: NDArray, lags: i
     return math.sqrt(max(var, 0.0) * n_obs / (n_obs - p))
 
 
-
 def _kernel_times(v: NDArray[np.float64], a: float) -> NDArray[np.float64]:
     """K v for K_ij = a^|i - j| along axis 0 (a forward and a backward recursion)."""
     forward = lfilter([1.0], [1.0, -a], v, axis=0)
     backward = lfilter([1.0], [1.0, -a], v[::-1], axis=0)[::-1]
     return forward + backward - v
-
 
 
 def slow_noise(jac: NDArray[np.float64], residuals: NDArray[np.float64]) -> tuple[float, ...]:
@@ -168,7 +166,8 @@ def slow_noise(jac: NDArray[np.float64], residuals: NDArray[np.float64]) -> tupl
     H the projection on the columns of ``jac``, which absorbs part of the drift), for 16
     correlation lengths -1 / ln a from 1 frame to n; the variances by non-negative least
     squares.  A slow part less than `DRIFT_Z` times its spread for white noise (each sum
-    of 2 n products, of variance 2 n white^2) is none.  ``jac`` has a row per coordinate, frame by frame; ``residuals`` shape (n, 2).
+    of 2 n products, of variance 2 n white^2) is none.  ``jac`` has a row per coordinate,
+    frame by frame; ``residuals`` shape (n, 2).
     """
     n = residuals.shape[0]
     lags = max(n // 4, 1)

@@ -309,7 +309,8 @@ def _convergence(p: dict[str, Any]) -> Outcome:
     # What makes it refined, measured on the slipping solution: its velocities change by
     # O(1) across a layer that shrinks like 1/mu0, for every mu0 (not uniform on [0, T]).
     # Only the layer restricts the statement, which is made on fixed intervals: that the
-    # convergence is not uniform in time (the position error at t = 1/alpha1) is an addition.
+    # convergence is not uniform in time (the distance of the centres at t = 1/alpha1) is an
+    # addition.
     layer = {"min_velocity_change_across_layer": {">=": 0.1}}
     converges = all_within(reproduced, tol)
     shown = all_within(reproduced, layer)

@@ -22,7 +22,8 @@ t = np.linspace(*p.t_span, p.n_points)
 FLOOR = 1e-6  # the bottom of the log axes, in units of R
 
 # %%
-fig, axes = subplots(2, len(p.mu0), (DOUBLE, 4.3), (0.55, 0.1, 0.4, 0.22), (0.2, 0.45), sharey="row")
+size, margins, gaps = (DOUBLE, 4.3), (0.55, 0.1, 0.4, 0.22), (0.2, 0.45)
+fig, axes = subplots(2, len(p.mu0), size, margins, gaps, sharey="row")
 for top, low, mu0 in zip(axes[0], axes[1], p.mu0, strict=True):
     terms = turntable.modal_terms(p.state, t, mu0, p.k)
     x = turntable.solve(p.state, t, mu0, p.k)[:, 0]

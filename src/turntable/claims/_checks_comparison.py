@@ -338,7 +338,7 @@ def _rolling_resistance(p: dict[str, Any]) -> Outcome:
         dimensionless_friction(p["friction_viscous"], mass, plane_rate(r))
         for r in p["turntable_rpm"]
     )
-    for m, (fn, ratios) in measures.items():
+    for m, (fn, _) in measures.items():
         reproduced[f"ratio_range_at_example_ball_{BASIS}_{m}"] = [
             float(fn(example[-1], k)[BASIS]),
             float(fn(example[0], k)[BASIS]),

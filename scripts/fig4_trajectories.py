@@ -37,6 +37,6 @@ for i, (ax, mu0, span) in enumerate(zip(panels, p.mu0, p.t_span, strict=True)):
     dist = np.hypot(*(z[:, :2] - centre).T)
     dist_ax.plot(t, dist, color=f"C{i}", label=rf"$\mu_0 = {mu0:g}$")
 panels[0].legend(loc="lower right", fontsize=6.5, handletextpad=0.2)
-dist_ax.set(yscale="log", xlabel=r"time $t\Omega$", ylabel=r"$|\mathbf{r} - \mathbf{r}_0|/R$")
+dist_ax.set(yscale="log", xlabel=r"time $t\Omega$", ylabel=r"distance from $(x_0, y_0)$ $/R$")
 dist_ax.legend(loc="upper right", fontsize=6.5)
 save(fig, snakemake)

@@ -97,9 +97,10 @@ ax_q.axhline(1.0, color="0.3", lw=0.5)
 ax_q.plot([], [], color="0.6", lw=0.8, label=f"factor {factor:g} either way")
 values = np.concatenate(ratios)
 ax_q.set_ylim(min(values.min(), 1 / factor) / 3, values.max() * 3)
-ax_g.set(xlabel=r"$\mu_0$", ylabel="log growth per turn")
-ax_t.set(xlabel=r"$\mu_0$", ylabel=r"growth rate per unit time $/\Omega$")
-ax_q.set(xlabel=r"$\mu_0$", ylabel="slipping / rolling")
+friction = r"friction $\mu_0$ (units of $m\Omega$)"
+ax_g.set(xlabel=friction, ylabel="log growth per turn")
+ax_t.set(xlabel=friction, ylabel=r"growth rate per unit time $/\Omega$")
+ax_q.set(xlabel=friction, ylabel="slipping / rolling")
 ax_g.legend(fontsize=6.5, loc="lower left")
 ax_q.legend(fontsize=6.5, loc="upper right")
 for ax, title in ((ax_g, "growth per turn"), (ax_t, "growth per unit time"), (ax_q, "ratios")):

@@ -392,6 +392,33 @@ def test_wrong_friction_scaling_fails(monkeypatch: pytest.MonkeyPatch, wrong: An
     assert claims.evaluate("model.scaling", SMALL)["verdict"] == "failed"
 
 
+def test_a_plane_that_slips_less_when_faster_fails(monkeypatch: pytest.MonkeyPatch) -> None:
+    """model.scaling tests the paper's "slipping on a fast rotating plane": a friction that
+    grows like Omega^2, in both the dimensional model and mu0 (so that the conversion of
+    units still agrees), makes mu0 grow with the plane's rate and the ball slip less on the
+    faster plane, and the check must fail on that alone."""
+    from turntable.claims import _checks_intro
+
+    exact_matrix = _checks_intro.dimensional_matrix
+    reference_rate = _checks_intro.plane_rate(33.0)
+
+    def friction(c: float, omega: float) -> float:
+        return c * (omega / reference_rate) ** 2
+
+    monkeypatch.setattr(
+        _checks_intro,
+        "dimensional_matrix",
+        lambda c, m, i, r, om: exact_matrix(friction(c, om), m, i, r, om),
+    )
+    monkeypatch.setattr(
+        _checks_intro, "dimensionless_friction", lambda c, m, om: friction(c, om) / (m * om)
+    )
+    result = claims.evaluate("model.scaling", SMALL)
+    assert result["reproduced"]["scaling_error_rel"] < 1e-9  # the conversion still agrees
+    assert result["reproduced"]["persistent_slip_fast_over_slow"] < 1.0
+    assert result["verdict"] == "failed"
+
+
 def test_wrong_torque_arm_of_the_dimensional_model_fails(monkeypatch: pytest.MonkeyPatch) -> None:
     from turntable.claims import _checks_intro
 
@@ -733,6 +760,46 @@ def test_fig6_draws_the_fit_the_claim_reports(evaluated: Callable) -> None:
     reproduced = evaluated("limit.convergence")["reproduced"]
     assert reproduced["position_order_k_paper"] == clean(fit.order)
     assert reproduced["position_errors_k_paper"] == clean(fit.error)
+
+
+def test_limit_layer_and_drift_as_the_closed_forms_say(evaluated: Callable) -> None:
+    """Across the layer the slipping ball's velocities change by dv = -k u0/(k+1) and
+    dw = i u0/(k+1) (complex form), so |dv| = k |u0|/(k+1), |dw| = |u0|/(k+1) and the four
+    velocities together by |u0| sqrt(1 + k^2)/(k+1), least at k = 1; at t = 1/alpha1 the
+    spiral's radius has grown by e while the rolling ball's has not, so the centres are about
+    (e - 1) times the initial distance from the spiral centre apart."""
+    reproduced = evaluated("limit.convergence")["reproduced"]
+    c = claims.resolve_params(config_params())
+    k, u0 = c["k_paper"], reproduced["initial_slip"]
+    assert reproduced["speed_change_across_layer_k_paper"][-1] == pytest.approx(
+        k * u0 / (k + 1), rel=1e-3
+    )
+    assert reproduced["spin_change_across_layer_k_paper"][-1] == pytest.approx(
+        u0 / (k + 1), rel=1e-3
+    )
+    least = min(u0 * np.sqrt(1 + q**2) / (q + 1) for q in c["k_values"])
+    assert reproduced["min_velocity_change_across_layer"] == pytest.approx(least, rel=1e-2)
+    assert reproduced["min_position_error_at_t_over_alpha1"] == pytest.approx(
+        (np.e - 1) * reproduced["initial_distance_from_spiral_centre"], rel=1e-2
+    )
+
+
+def test_rolling_comparison_at_the_example_ball(evaluated: Callable) -> None:
+    """Under equal power slipping is faster than rolling but not twice as fast at the
+    example ball's mu0 (all above the crossover), and the ratio tends to 1 from above like
+    1 + c/mu0^2: c > 0, and the ratio at mu0 = 100 is 1 + c/100^2 to first order."""
+    from turntable.claims._checks_comparison import growth_ratios
+
+    reproduced = evaluated("comparison.rolling_resistance")["reproduced"]
+    factor = reproduced["much_faster_factor"]
+    crossover = reproduced["crossover_factor_equal_power_per_turn"]
+    assert all(m > crossover for m in reproduced["mu0_example_ball"])
+    low, high = reproduced["ratio_range_at_example_ball_equal_power_per_turn"]
+    assert 1.0 < low < high < factor
+    excess = reproduced["ratio_minus_1_times_mu0_squared_equal_power_per_turn"]
+    assert excess > 0
+    at_100 = float(growth_ratios(100.0, reproduced["k"])["equal_power"])
+    assert (at_100 - 1.0) * 100.0**2 == pytest.approx(excess, rel=1e-2)
 
 
 def _ratios(*values: Any) -> dict[str, np.ndarray]:

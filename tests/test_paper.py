@@ -265,7 +265,7 @@ def test_every_claim_the_article_quotes_is_registered() -> None:
     text = PAPER.read_text(encoding="utf-8")
     from turntable import claims
 
-    used = set(re.findall(r'(?:rep|claim|verdict|cid|vb)\("([a-z0-9_.]+)"', text))
+    used = set(re.findall(r'(?:rep|claim|verdict|cid|vb|val|lim)\("([a-z0-9_.]+)"', text))
     assert used
     assert used <= set(claims.claim_ids())
 

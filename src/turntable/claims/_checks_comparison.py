@@ -12,6 +12,7 @@ from scipy.optimize import brentq
 
 import turntable as tt
 from turntable import rolling
+from turntable.claims._checks_intro import ball_mass, dimensionless_friction, plane_rate
 from turntable.claims._core import (
     Outcome,
     Verdict,
@@ -330,7 +331,24 @@ def _rolling_resistance(p: dict[str, Any]) -> Outcome:
         for lvl in ("1", "factor", "inverse_factor"):
             suffix = "" if lvl == "1" else f"_{lvl}"
             reproduced[f"crossover{suffix}_{name}_{m}"] = crossing[(m, name, lvl)]
+    # The example ball of model.scaling on its turntables, and the approach of the ratios
+    # under (b) to 1 from above, like 1 + c / mu0^2 (c measured at mu0 = m1).
+    mass = ball_mass(p["ball_radius"], p["ball_density"])
+    example = sorted(
+        dimensionless_friction(p["friction_viscous"], mass, plane_rate(r))
+        for r in p["turntable_rpm"]
+    )
+    for m, (fn, _) in measures.items():
+        reproduced[f"ratio_range_at_example_ball_{BASIS}_{m}"] = [
+            float(fn(example[-1], k)[BASIS]),
+            float(fn(example[0], k)[BASIS]),
+        ]
+        reproduced[f"ratio_minus_1_times_mu0_squared_{BASIS}_{m}"] = float(
+            (fn(m1, k)[BASIS] - 1.0) * m1**2
+        )
     reproduced |= {
+        "mu0_example_ball": example,
+        "ratio_excess_mu0": m1,
         "ratio_at_largest_equal_coefficient": float(per_turn["equal_coefficient"][-1]),
         "equal_power_small_mu0_per_turn_vs_k2_over_mu0": abs(small_b_turn),
         "equal_power_small_mu0_per_time_vs_closed_form": abs(small_b_time),

@@ -102,7 +102,12 @@ def _realization(p: dict[str, Any]) -> Outcome:
         "angle_at_largest_mu0": angle_last,
         "projector_at_largest_mu0": proj_last,
         "dynamics_at_largest_mu0": dyn_last,
+        # at the largest mu0, spectral norms (largest singular value) of 6x6 differences:
+        # the other maps onto u = 0 against the projector, the motion on u = 0 without the
+        # contact force (L on the no-slip states) against L on the slow subspace
         "other_limits": min(others_min, free_min),
+        "other_maps_min": others_min,
+        "free_motion_min": free_min,
         "package": pkg_err,
         "slow_growth_rate": growth_min,
         "k": p["k_paper"],

@@ -35,7 +35,7 @@ SPIRAL_IN = 1e-6
     ),
     paper_value={"text": "alpha2 < 0 < alpha1 for every mu0 > 0: an unstable focus"},
     expected="refined",
-    decisive="equilibria_plane_dimension",
+    decisive="max_alpha2",
     gist=(
         "every equilibrium is unstable, but within a plane of equilibria and with two "
         "decaying directions beside the two growing ones: a saddle-focus, an unstable "

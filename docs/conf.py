@@ -3,7 +3,9 @@
 import contextlib
 import inspect
 import pkgutil
+import zlib
 from importlib import import_module
+from pathlib import Path
 
 from docutils import nodes
 from docutils.statemachine import StringList
@@ -24,11 +26,50 @@ extensions = [
     "sphinx.ext.autodoc",
     "sphinx.ext.autosummary",
     "sphinx.ext.mathjax",
+    "sphinx-mathjax-offline",  # its module name has hyphens
+    "sphinx.ext.intersphinx",
+    "sphinx_copybutton",
 ]
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
-exclude_patterns = ["_build"]
+exclude_patterns = ["_build", "_intersphinx"]
 default_role = "py:obj"
 myst_heading_anchors = 3
+myst_enable_extensions = ["dollarmath", "amsmath"]
+
+# Every reference must resolve; the ones below name what has no inventory to link to.
+nitpicky = True
+nitpick_ignore = [
+    # OpenCV's documentation is Doxygen, with no Sphinx inventory.
+    ("py:obj", "cv2.fitEllipseDirect"),
+]
+
+_HERE = Path(__file__).parent
+_INVENTORIES = _HERE / "_intersphinx"
+
+
+def _compressed(name):
+    """The inventory of ``_intersphinx/NAME.txt``: its first three lines, then the others
+    (its objects) compressed."""
+    lines = (_INVENTORIES / f"{name}.txt").read_text().splitlines(keepends=True)
+    header = "".join(lines[:3]) + "# The remainder of this file is compressed using zlib.\n"
+    body = "".join(line for line in lines if not line.startswith("#"))
+    path = _HERE / "_build" / "intersphinx" / f"{name}.inv"
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_bytes(header.encode() + zlib.compress(body.encode(), 9))
+    return str(path)
+
+
+# Offline: the inventories are in the repository (_intersphinx/README.md).
+intersphinx_mapping = {
+    "python": ("https://docs.python.org/3/", str(_INVENTORIES / "python.inv")),
+    "scipy": ("https://docs.scipy.org/doc/scipy/", str(_INVENTORIES / "scipy.inv")),
+    "numpy": ("https://numpy.org/doc/stable/", _compressed("numpy")),
+    "matplotlib": ("https://matplotlib.org/stable/", _compressed("matplotlib")),
+}
+intersphinx_timeout = 1
+copybutton_exclude = ".linenos, .gp, .go"
+copybutton_prompt_text = r">>> |\.\.\. |\$ "
+copybutton_prompt_is_regexp = True
 
 autodoc_typehints = "none"
 autosummary_generate = False

@@ -73,7 +73,7 @@ def _validator(uri: str) -> Any:
 
 
 def validate(config: dict[str, Any], schema: str | Path) -> list[str]:
-    """Fill in the defaults of `config` from `schema` and return one line per problem.
+    """Fill in the defaults of ``config`` from ``schema`` and return one line per problem.
 
     Each line is the key's path (``section.key[i]``) and what is expected.
 

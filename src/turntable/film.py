@@ -7,11 +7,11 @@ fields, as spreadsheets and tracking programs write it:
 - lines whose first non-blank character is ``#`` are comments, blank lines are skipped;
 - the first other line is the header; it names at least the columns ``t``, ``x`` and
   ``y`` (in any order; other columns are ignored); its delimiter is the file's: a comma,
-  or else a tab, or else a semicolon (`DELIMITERS`); a field may be quoted (``"t"``);
+  or else a tab, or else a semicolon (``DELIMITERS``); a field may be quoted (``"t"``);
 - every further line is one frame, with as many fields as the header; t, x and y are
   finite numbers and t increases strictly from frame to frame;
 - a comment line containing the word ``SYNTHETIC`` (upper case) marks the film as
-  simulated, not measured (`Film.synthetic`).
+  simulated, not measured (``Film.synthetic``).
 
 `read_film` refuses anything else with a `FilmError` whose message names the file, the
 line and the column.  `write_film` writes a film; synthetic films, with a header that marks

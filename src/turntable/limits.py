@@ -94,7 +94,7 @@ def limit_error(z0: ArrayLike, t: ArrayLike, mu0: ArrayLike, k: float) -> NDArra
     Returns
     -------
     numpy.ndarray
-        Same shape as `mu0`: ``max over t of |r(t; mu0) - r_nh(t)|``, with r the
+        Same shape as ``mu0``: ``max over t of |r(t; mu0) - r_nh(t)|``, with r the
         centre from `solve` and r_nh the centre from `nonholonomic`.
 
     Notes
@@ -166,7 +166,7 @@ def limit_error_fit(z0: ArrayLike, t_end: float, mu0: ArrayLike, k: float) -> Li
     Notes
     -----
     e(mu0) = max over t in [0, t_end] of |r(t; mu0) - r_nh(t)| (`limit_error`, on
-    `LIMIT_FIT_TIMES` equally spaced times), and the least-squares fit
+    ``LIMIT_FIT_TIMES`` equally spaced times), and the least-squares fit
     ln e = ln c + p ln mu0 over the given mu0.  Section 3: p -> -1 (positions converge
     uniformly on a fixed interval at rate O(1/mu0)).  The one fit of the order that
     the claim ``limit.convergence`` reports for the paper's ball and Fig. 6(b) draws.

@@ -257,7 +257,7 @@ def max_time(mu0: ArrayLike, k: ArrayLike, z0: ArrayLike | None = None) -> NDArr
     ----------
     mu0, k : float or array_like
         Friction coefficient and inertia ratio, finite and > 0; broadcast
-        against each other.  Single numbers if `z0` is given.
+        against each other.  Single numbers if ``z0`` is given.
     z0 : array_like, optional
         Initial state (x, y, vx, vy, wx, wy).  Without it, the bound is
         where the growth factor e^{alpha1 t} itself overflows.
@@ -266,7 +266,7 @@ def max_time(mu0: ArrayLike, k: ArrayLike, z0: ArrayLike | None = None) -> NDArr
     -------
     numpy.ndarray
         ``ln(DBL_MAX) / alpha1`` (about 709.78 / alpha1), of the broadcast
-        shape; with `z0`, the (slightly smaller) largest t that both `solve`
+        shape; with ``z0``, the (slightly smaller) largest t that both `solve`
         and `modal_terms` accept for that initial state, as a 0-d array.
         Each of them raises ValueError for later times (`modal_terms`, whose
         terms are bounded one by one, up to 2 % earlier than `solve`).

@@ -27,7 +27,7 @@ states never makes a claim ``refined`` when the statement holds as stated.
 
 The registry is the one source of the claims, of their order (the order of
 registration, with the check modules imported in the paper's order, see
-`CHECK_MODULES`) and of the verdict each is expected to reach (``expected=`` of
+``CHECK_MODULES``) and of the verdict each is expected to reach (``expected=`` of
 `register`); ``results/claims.json``, ``results/claims.md`` and the tests of
 ``tests/test_claims.py`` are generated from it.
 

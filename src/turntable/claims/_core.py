@@ -63,7 +63,7 @@ def resolve_params(params: Mapping[str, Any] | None = None) -> dict[str, Any]:
     """Return the check parameters: ``params`` over `DEFAULT_PARAMS`, validated.
 
     The defaults and the rules (types, bounds, lengths) are those of the JSON schema
-    ``params.schema.yaml`` of this package (see `params_schema`), the same the workflow
+    ``params.schema.yaml`` of this package (see ``params_schema``), the same the workflow
     validates the ``claims:`` section of the workflow's configuration against; an integer must
     be an ``int`` (not ``400.0``). The one rule a schema cannot express is added here:
     ``mu0_range`` is increasing. (That ``state_si`` is not all zero is the schema's.)
@@ -201,7 +201,7 @@ class Outcome:
     tolerance : dict
         The bounds against which the verdict was decided, under the key of the
         reproduced value each bounds: a number (the value is at most that) or
-        ``{relation: limit}`` (see `within`). Every key is a key of ``reproduced``.
+        ``{relation: limit}`` (see ``within``). Every key is a key of ``reproduced``.
         Unless the verdict is ``failed`` every bound holds: what makes a verdict
         ``refined``, ``corrected`` or ``undecidable`` is stated as a bound that holds.
     summary : str

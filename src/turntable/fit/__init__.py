@@ -24,12 +24,12 @@ d r / d s = tau v(tau): both models' rates scale with Omega, and the ratio of gr
 turning (alpha1 / beta, or Re / Im of lambda_g) fixes the coefficient alone, so Omega is
 identifiable from a film of a turn or more.
 
-The modules, one concern each: `models` (the models' positions and parameter counts,
-shared with `simulate`, the synthetic films), `parameters` (the parameter vector and the
-Jacobian), `start` (start values), `results` (what a fit returns; AICc and whiteness),
-`lsq` (the fits), `diagnose` (consistency of Omega and the axis, problems), `io` (the JSON
-of ``turntable fit`` and reading it back), `design` (predicted errors, distinguishability,
-measurability) and `plot` (drawing a fit; matplotlib is imported there only).  Their public
+The modules, one concern each: ``models`` (the models' positions and parameter counts,
+shared with ``simulate``, the synthetic films), ``parameters`` (the parameter vector and the
+Jacobian), ``start`` (start values), ``results`` (what a fit returns; AICc and whiteness),
+``lsq`` (the fits), ``diagnose`` (consistency of Omega and the axis, problems), `io` (the JSON
+of ``turntable fit`` and reading it back), ``design`` (predicted errors, distinguishability,
+measurability) and ``plot`` (drawing a fit; matplotlib is imported there only).  Their public
 names are importable from `turntable.fit`.
 """
 

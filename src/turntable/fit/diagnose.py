@@ -293,7 +293,7 @@ def problems(
         (Omega dt above `MAX_FRAME_STEP`: a time unit or rate mistake); each fit that did
         not converge; each coefficient at a bound of `BOUNDS`, with its one-sided limit;
         each fitted Omega at the end of its range; a selection that is not decisive or not
-        made (`FilmFit.reason`); a relative standard error above `LINEAR_RELATIVE_ERROR`
+        made (``FilmFit.reason``); a relative standard error above `LINEAR_RELATIVE_ERROR`
         of the selected model (of each, with none selected or a selection that is not
         decisive, `checked_selection`); residuals of the selected
         model (or, with none selected,

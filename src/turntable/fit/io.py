@@ -241,7 +241,7 @@ def result_json(
 
 
 def setup_from_json(result: dict[str, Any], model: str | None = None) -> Setup:
-    """Return the `Setup` recorded in a result of `result_json` (``turntable fit``).
+    """Return the `~turntable.film.Setup` recorded in a result of `result_json` (``turntable fit``).
 
     With ``model``, Omega and the axis are that model's (fitted ones with ``--fit-omega``,
     ``--fit-axis``).

@@ -277,7 +277,7 @@ def fit_model(
     ln c, and ln Omega, a if asked (module docstring).  A trial point at which the solution
     would overflow a double over the film (`turntable.max_time`, relevant only for very long
     films) gets a huge residual, so the optimiser steps back.  A coefficient at a bound of
-    `BOUNDS` gets a one-sided 95 % limit (`_limit`).
+    `BOUNDS` gets a one-sided 95 % limit (``_limit``).
 
     Examples
     --------

@@ -69,7 +69,7 @@ class ModelFit(NamedTuple):
         "upper" or "lower": the end of `BOUNDS` the coefficient ran into; None inside.
     limit : float
         At a bound, the one-sided 95 % limit (lower limit at the upper bound, upper limit
-        at the lower one, `_limit`); nan otherwise.
+        at the lower one, ``_limit``); nan otherwise.
     omega, omega_stderr : float
         Omega (rad/s) of the fit: the given one, or the fitted one with its standard error
         (nan when given).
@@ -148,7 +148,7 @@ class ModelFit(NamedTuple):
     @property
     def describes(self) -> bool:
         """Whether the model describes the film: white residuals, or correlated ones at
-        most `NOISE_FACTOR` times the film's noise (`noise`)."""
+        most `NOISE_FACTOR` times the film's noise (``noise``)."""
         return self.white or self.noise_ratio <= NOISE_FACTOR
 
 

@@ -1,13 +1,13 @@
 """Stage 6, checks: a track that contradicts itself is refused before anything is written.
 
-Each check compares two things the video says independently; `checks` returns every one,
-with its value and its limit, and `first_failure` the line that names the first that failed
+Each check compares two things the video says independently; ``checks`` returns every one,
+with its value and its limit, and ``first_failure`` the line that names the first that failed
 and the option that would help.
 
-- ``rate``: the mark turns at a rate a platter can have (`RATE_RANGE`), or within 1 % of
+- ``rate``: the mark turns at a rate a platter can have (``RATE_RANGE``), or within 1 % of
   ``--rpm``;
 - ``mark_on_circle``: the mark's images lie on the fitted camera's circle, turning steadily
-  (rms within `MARK_RMS_PX` px or half the mark's size);
+  (rms within ``MARK_RMS_PX`` px or half the mark's size);
 - ``axis``: the centre of the mark's circle, seen through the camera the rim alone gives, is
   the rim's centre (within 3 % of P);
 - ``tilt``: the mark's circle and the rim are seen under the same tilt (their images' axis

@@ -1,11 +1,11 @@
 """From a video to a film: the stages in order, and the `Track` they make.
 
-`track_video` decodes the video (`decode`), finds the platter's rim on the first frame
-(`platter`), the ball and the mark on the first frames (`find`), follows both through the
-video (`follow`), fits the camera and the platter's rate to the rim and the turning mark
-(`calibrate`) and checks that what it found agrees with itself (`check`).  The ball's centre
+`track_video` decodes the video (``decode``), finds the platter's rim on the first frame
+(``platter``), the ball and the mark on the first frames (``find``), follows both through the
+video (``follow``), fits the camera and the platter's rate to the rim and the turning mark
+(``calibrate``) and checks that what it found agrees with itself (``check``).  The ball's centre
 is the point R above the platter whose sphere's image is centred on the ball's blob
-(`camera.sphere_centre`).  A frame where the ball is not measured is a gap of the film (never
+(`~turntable.video.camera.sphere_centre`).  A frame where the ball is not measured is a gap of the film (never
 a guessed position), named in the warnings.  Each stage takes plain data and returns plain
 data.
 """
@@ -39,7 +39,7 @@ MIN_RIM_CONTRAST = 8.0
 
 class FirstLook(NamedTuple):
     """What was found on the first frame: the image (RGB), the rim (None if not found) and
-    the candidates for the ball and the mark (`turntable.video.find.Candidate`)."""
+    the candidates for the ball and the mark (``turntable.video.find.Candidate``)."""
 
     image: NDArray[np.uint8]
     rim: Ellipse | None

@@ -262,7 +262,8 @@ def measurability(
     mu0 : sequence of float
         Friction coefficients of the slipping ball.
     state0 : array_like
-        Dimensionless state of the ball at the first frame, e.g. from `~turntable.film.state_from_si`.
+        Dimensionless state of the ball at the first frame, e.g. from
+        `~turntable.film.state_from_si`.
         The rolling ball starts from its projection on the no-slip constraint
         (`turntable.no_slip_state`: same position and conserved quantities).
     setup, camera : Setup, Camera

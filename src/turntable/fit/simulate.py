@@ -31,8 +31,9 @@ def simulate_film(
     coefficient : float
         mu0 / (m Omega) or delta / (m R^2 Omega), dimensionless, > 0.
     state0 : array_like
-        Dimensionless state (x, y, vx, vy, wx, wy) at t = 0 (see `~turntable.film.state_from_si`); for
-        the rolling model it must satisfy the no-slip constraint.
+        Dimensionless state (x, y, vx, vy, wx, wy) at t = 0 (see
+        `~turntable.film.state_from_si`); for the rolling model it must satisfy the no-slip
+        constraint.
     setup : Setup
         Ball and turntable.
     camera : Camera

@@ -5,9 +5,9 @@
 video (``follow``), fits the camera and the platter's rate to the rim and the turning mark
 (``calibrate``) and checks that what it found agrees with itself (``check``).  The ball's centre
 is the point R above the platter whose sphere's image is centred on the ball's blob
-(`~turntable.video.camera.sphere_centre`).  A frame where the ball is not measured is a gap of the film (never
-a guessed position), named in the warnings.  Each stage takes plain data and returns plain
-data.
+(`~turntable.video.camera.sphere_centre`).  A frame where the ball is not measured is a gap
+of the film (never a guessed position), named in the warnings.  Each stage takes plain data
+and returns plain data.
 """
 
 from __future__ import annotations

@@ -3,14 +3,17 @@
 import contextlib
 import inspect
 import pkgutil
+import re
 import zlib
 from importlib import import_module
 from pathlib import Path
 
 from docutils import nodes
 from docutils.statemachine import StringList
+from sphinx import addnodes
 from sphinx.errors import PycodeError
 from sphinx.pycode import ModuleAnalyzer
+from sphinx.transforms.post_transforms import SphinxPostTransform
 from sphinx.util.docutils import SphinxDirective
 
 import turntable
@@ -169,12 +172,51 @@ def _skip_field_aliases(app, what, name, obj, skip, options):
     return None
 
 
+#: Inline code, maths and references, whose text is taken as it is.
+_INLINE_LITERAL = re.compile(r"(``.+?``|:math:`[^`]*`|`[^`]*`)")
+
+
 def _plain_bars(app, what, name, obj, options, lines):
-    """The docstrings write |x| for an absolute value, never a substitution."""
-    lines[:] = [line.replace("|", r"\|") for line in lines]
+    """The docstrings write |x| for an absolute value, never a substitution: escape it in
+    running text (not in code, maths, or the blocks after ``::`` and ``.. math::``)."""
+    block_indent = None
+    for i, line in enumerate(lines):
+        indent = len(line) - len(line.lstrip())
+        if block_indent is not None and (not line.strip() or indent > block_indent):
+            continue
+        block_indent = None
+        parts = _INLINE_LITERAL.split(line)
+        parts[::2] = [part.replace("|", r"\|") for part in parts[::2]]
+        lines[i] = "".join(parts)
+        if line.rstrip().endswith("::"):
+            block_indent = indent
+
+
+class LinkCodeNames(SphinxPostTransform):
+    """In the Markdown pages, inline code that is the full name of a documented Python
+    object (``turntable.solve``, ``turntable.solve()``) links to it."""
+
+    default_priority = 5  # before the references are resolved (10)
+
+    def run(self, **kwargs):
+        if not str(self.document.get("source", "")).endswith(".md"):
+            return
+        domain = self.env.get_domain("py")
+        names = set(domain.objects) | set(domain.modules)
+        for node in list(self.document.findall(nodes.literal)):
+            text = node.astext()
+            name = text.removesuffix("()")
+            if name not in names or isinstance(node.parent, nodes.reference):
+                continue
+            xref = addnodes.pending_xref(
+                "", refdomain="py", reftype="obj", reftarget=name, refexplicit=True
+            )
+            xref += nodes.literal(text, text, classes=["xref", "py", "py-obj"])
+            node.replace_self(xref)
 
 
 def setup(app):
+    app.add_post_transform(LinkCodeNames)
     app.add_directive("api-members", ApiMembers)
     app.connect("autodoc-process-docstring", _plain_bars, priority=400)
     app.connect("autodoc-skip-member", _skip_field_aliases)

@@ -43,6 +43,9 @@ DELIMITERS = (",", "\t", ";")
 #: Word of a comment line that marks a film as simulated (`turntable.fit.synthetic_header`
 #: writes it).
 SYNTHETIC_MARK = "SYNTHETIC"
+#: A film that ships with the package, for trying ``turntable fit``: 10 s of a SYNTHETIC
+#: slipping ball (mu0 = 3) at 30 frames/s with 0.2 mm of noise; its header gives the truth.
+EXAMPLE_FILM = Path(__file__).parent / "data" / "SYNTHETIC_slipping.csv"
 _MARK = re.compile(rf"\b{SYNTHETIC_MARK}\b")
 
 

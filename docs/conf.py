@@ -4,6 +4,7 @@ import contextlib
 import inspect
 import pkgutil
 import re
+import sys
 import zlib
 from importlib import import_module
 from pathlib import Path
@@ -17,6 +18,11 @@ from sphinx.transforms.post_transforms import SphinxPostTransform
 from sphinx.util.docutils import SphinxDirective
 
 import turntable
+
+sys.path.insert(0, str(Path(__file__).parent))
+import site_pages
+
+site_pages.write_all()
 
 project = "turntable"
 author = "turntable developers"
@@ -32,9 +38,10 @@ extensions = [
     "sphinx-mathjax-offline",  # its module name has hyphens
     "sphinx.ext.intersphinx",
     "sphinx_copybutton",
+    "matplotlib.sphinxext.plot_directive",
 ]
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
-exclude_patterns = ["_build", "_intersphinx"]
+exclude_patterns = ["_build", "_intersphinx", "site_pages.py"]
 default_role = "py:obj"
 myst_heading_anchors = 3
 myst_enable_extensions = ["dollarmath", "amsmath"]
@@ -78,7 +85,15 @@ autodoc_typehints = "none"
 autosummary_generate = False
 numpydoc_show_class_members = False
 
+# The examples of the pages run when the site is built (``{plot}``), shown with their code.
+plot_include_source = True
+plot_html_show_source_link = False
+plot_html_show_formats = False
+plot_formats = [("png", 100)]
+
 html_theme = "pydata_sphinx_theme"
+html_static_path = ["_static"]
+html_css_files = ["custom.css"]
 html_title = f"turntable {release}"
 html_show_sourcelink = False
 html_theme_options = {
@@ -87,6 +102,10 @@ html_theme_options = {
     "secondary_sidebar_items": ["page-toc"],
     "footer_start": ["copyright"],
     "footer_end": [],
+}
+# Pages without sub-pages have no left sidebar, and their text the width it frees.
+html_sidebars = {
+    page: [] for page in ("index", "getting-started", "results", "theory", "citing", "changelog")
 }
 
 #: The modules of the API reference, one page each (docs/api/).
@@ -104,12 +123,17 @@ API_MODULES = [
 
 
 def public_names(module_name):
-    """The names of ``__all__``, else those defined in the module and not private."""
+    """The names of ``__all__``, else those defined in the module (a function or class, or
+    a constant with a doc comment ``#:``) and not private."""
     module = import_module(module_name)
+    commented = set()
+    with contextlib.suppress(PycodeError):
+        commented = {a for _, a in ModuleAnalyzer.for_module(module_name).find_attr_docs()}
     return getattr(module, "__all__", None) or [
         name
         for name, obj in vars(module).items()
-        if getattr(obj, "__module__", None) == module_name and not name.startswith("_")
+        if (getattr(obj, "__module__", None) == module_name or name in commented)
+        and not name.startswith("_")
     ]
 
 

@@ -456,8 +456,9 @@ def test_the_worked_example_is_what_the_command_prints(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     """The worked example of docs/fitting.md, run on the synthetic film that the
-    configuration in the repository makes (as rule synthetic_film writes it): every number of its JSON excerpt
-    is the command's, to the digits shown, and so are the model selected and the flags."""
+    configuration in the repository makes (as rule synthetic_film writes it): every number
+    of its JSON excerpt is the command's, to the digits shown, and so are the model
+    selected and the flags."""
     import re
 
     config = full_config()

@@ -84,7 +84,7 @@ class Setup(NamedTuple):
         Angular velocity Omega of the turntable, rad/s, counterclockwise in the (x, y)
         coordinates of the film (from the x axis towards the y axis).
     k : float
-        Inertia ratio I / (m R^2) of the ball (2/5 for a homogeneous ball).
+        Inertia ratio :math:`I / (m R^2)` of the ball (2/5 for a homogeneous ball).
     axis : tuple of float
         Position (x, y) of the turntable's axis in the film's coordinates, m.
     """

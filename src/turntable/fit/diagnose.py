@@ -31,7 +31,7 @@ MAX_FRAME_STEP = 1.0
 
 
 def frame_step(film: Film, setup: Setup) -> float:
-    """Return the median step Omega (t_{i+1} - t_i) between frames, rad (0 for one frame).
+    r"""Return the median step :math:`\Omega (t_{i+1} - t_i)` between frames, rad (0 for one frame).
 
     Examples
     --------

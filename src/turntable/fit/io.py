@@ -30,7 +30,7 @@ def result_json(
     source: str = "",
     check: Consistency | None = None,
 ) -> dict[str, Any]:
-    """Return the fit as the JSON object that ``turntable fit`` prints.
+    r"""Return the fit as the JSON object that ``turntable fit`` prints.
 
     Parameters
     ----------
@@ -41,9 +41,9 @@ def result_json(
         Its ``synthetic`` flag (a SYNTHETIC comment in the file) is copied to "data".
     mass : float, optional
         Mass of the ball in kg; adds the dimensional coefficients
-        mu0_dim = mu0 m Omega (kg/s, force per slip velocity) and
-        delta_dim = delta m R^2 Omega (kg m^2/s, torque per angular velocity), with the
-        model's Omega (the fitted one with ``fit_omega``).
+        :math:`\mu_{0,\text{dim}} = \mu_0 m \Omega` (kg/s, force per slip velocity) and
+        :math:`\delta_\text{dim} = \delta m R^2 \Omega` (kg m²/s, torque per angular
+        velocity), with the model's :math:`\Omega` (the fitted one with ``fit_omega``).
     source : str
         Name of the data file.
     check : Consistency, optional

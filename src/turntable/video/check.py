@@ -1,4 +1,4 @@
-"""Stage 6, checks: a track that contradicts itself is refused before anything is written.
+r"""Stage 6, checks: a track that contradicts itself is refused before anything is written.
 
 Each check compares two things the video says independently; ``checks`` returns every one,
 with its value and its limit, and ``first_failure`` the line that names the first that failed
@@ -15,7 +15,7 @@ and the option that would help.
 - ``ball_moves``: the ball moves relative to the platter (the spread of its path in the
   platter's frame at least R / 2), not rigidly with it;
 - ``ball_path``: the ball does not jump: at most 2 % of its positions are more than R / 4
-  (and what an acceleration of 2 Omega^2 P could do) off the line between their neighbours;
+  (and what an acceleration of :math:`2 \Omega^2 P` could do) off the line between their neighbours;
 - ``ball_size``: the ball's image is the size that R and the fitted camera predict (within
   a factor 0.7-1.4 in radius).
 """

@@ -108,7 +108,7 @@ class Scene(NamedTuple):
         Strength of the ball's shadow on the platter (0 none, 0.5 half the light removed):
         the sphere's projection along the light, with an edge soft over ~1.5 px.
     lens_k1 : float
-        Radial distortion of the lens, x_d = x (1 + k1 r^2) in image coordinates
+        Radial distortion of the lens, :math:`x_d = x (1 + k_1 r^2)` in image coordinates
         normalised by the focal length; < 0 is barrel distortion (in [-0.3, 0.3]).
     readout : float
         Rolling shutter: row v is exposed from t + readout v / (height fps), readout a

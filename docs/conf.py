@@ -13,6 +13,7 @@ from docutils import nodes
 from docutils.statemachine import StringList
 from sphinx import addnodes
 from sphinx.errors import PycodeError
+from sphinx.ext.intersphinx import InventoryAdapter
 from sphinx.pycode import ModuleAnalyzer
 from sphinx.transforms.post_transforms import SphinxPostTransform
 from sphinx.util.docutils import SphinxDirective
@@ -218,7 +219,8 @@ def _plain_bars(app, what, name, obj, options, lines):
 
 class LinkCodeNames(SphinxPostTransform):
     """In the Markdown pages, inline code that is the full name of a documented Python
-    object (``turntable.solve``, ``turntable.solve()``) links to it."""
+    object (``turntable.solve``, ``turntable.solve()``, ``turntable.solve(...)``), this
+    site's or one of the linked projects', links to it."""
 
     default_priority = 5  # before the references are resolved (10)
 
@@ -227,9 +229,12 @@ class LinkCodeNames(SphinxPostTransform):
             return
         domain = self.env.get_domain("py")
         names = set(domain.objects) | set(domain.modules)
+        for kind, objects in InventoryAdapter(self.env).main_inventory.items():
+            if kind.startswith("py:"):
+                names |= set(objects)
         for node in list(self.document.findall(nodes.literal)):
             text = node.astext()
-            name = text.removesuffix("()")
+            name = text.removesuffix("()").removesuffix("(...)")
             if name not in names or isinstance(node.parent, nodes.reference):
                 continue
             xref = addnodes.pending_xref(

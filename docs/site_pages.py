@@ -13,6 +13,7 @@ import html
 import json
 import subprocess
 import sys
+import textwrap
 from pathlib import Path
 from types import SimpleNamespace
 
@@ -95,9 +96,14 @@ def gallery() -> None:
 
 
 def _bibtex(kind: str, key: str, fields: dict) -> str:
+    """A BibTeX entry, its values wrapped within 80 characters."""
     width = max(map(len, fields))
-    body = "".join(f"  {name:<{width}} = {{{value}}},\n" for name, value in fields.items())
-    return f"@{kind}{{{key},\n{body}}}\n"
+    lines = []
+    for name, value in fields.items():
+        head = f"  {name:<{width}} = {{"
+        wrapped = textwrap.wrap(f"{value}}},", 80 - len(head))
+        lines += [head + wrapped[0], *(" " * len(head) + w for w in wrapped[1:])]
+    return f"@{kind}{{{key},\n" + "\n".join(lines) + "\n}\n"
 
 
 def citation() -> None:

@@ -48,7 +48,8 @@ def system_matrix(delta: float, k: float) -> NDArray[np.float64]:
     >>> import numpy as np
     >>> from turntable import rolling
     >>> lam = np.linalg.eigvals(rolling.system_matrix(0.1, 0.4))
-    >>> bool(np.allclose(np.sort_complex(lam), np.sort_complex(rolling.eigenvalues(0.1, 0.4))))
+    >>> closed_form = rolling.eigenvalues(0.1, 0.4)
+    >>> bool(np.allclose(np.sort_complex(lam), np.sort_complex(closed_form)))
     True
     """
     delta = _validate.positive_scalar("delta", delta)

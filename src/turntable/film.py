@@ -266,9 +266,10 @@ def rig_from_config(section: Mapping[str, Any]) -> Rig:
     --------
     >>> from turntable.film import rig_from_config
     >>> rig = rig_from_config({
-    ...     "radius_m": 0.005, "mass_kg": 0.00411, "k": 0.4, "rpm": 33.3, "axis_m": [0, 0],
-    ...     "fps": 240.0, "noise_m": 2e-4, "duration_s": 10.0, "start_position_m": [0.05, 0],
-    ...     "start_velocity_m_s": [0, 0], "start_spin_rad_s": [0, 0]})
+    ...     "radius_m": 0.005, "mass_kg": 0.00411, "k": 0.4, "rpm": 33.3,
+    ...     "axis_m": [0, 0], "fps": 240.0, "noise_m": 2e-4, "duration_s": 10.0,
+    ...     "start_position_m": [0.05, 0], "start_velocity_m_s": [0, 0],
+    ...     "start_spin_rad_s": [0, 0]})
     >>> rig.camera, rig.state0
     (Camera(fps=240.0, noise=0.0002, duration=10.0), array([10.,  0.,  0.,  0.,  0.,  0.]))
     """
@@ -345,7 +346,8 @@ def read_film(
     >>> with open(path, "w") as f:
     ...     _ = f.write(os.linesep.join(lines))
     >>> read_film(path)
-    Film(t=array([0. , 0.1]), x=array([0.05 , 0.049]), y=array([0.   , 0.017]), synthetic=False)
+    Film(t=array([0. , 0.1]), x=array([0.05 , 0.049]),
+         y=array([0.   , 0.017]), synthetic=False)
     >>> read_film(path, min_rows=15, why="for a fit")
     Traceback (most recent call last):
     ...
@@ -451,7 +453,8 @@ def write_film(
     >>> import os, tempfile
     >>> from turntable.film import Film, read_film, write_film
     >>> path = os.path.join(tempfile.mkdtemp(), "film.csv")
-    >>> write_film(path, Film([0.0, 0.1], [0.05, 0.049], [0.0, 0.017]), ["SYNTHETIC example"])
+    >>> film = Film([0.0, 0.1], [0.05, 0.049], [0.0, 0.017])
+    >>> write_film(path, film, ["SYNTHETIC example"])
     >>> with open(path) as f:
     ...     print(f.read())
     # SYNTHETIC example

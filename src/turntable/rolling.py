@@ -206,7 +206,8 @@ def modal_terms(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> RollingM
     >>> from turntable import rolling
     >>> z0, t = rolling.state_on_constraint([0, 0, 1, 0]), [0.0, 1.0, 10.0]
     >>> parts = rolling.modal_terms(z0, t, 0.1, 0.4)
-    >>> bool(abs(parts.spiral + parts.centre - rolling.solve(z0, t, 0.1, 0.4)).max() < 1e-14)
+    >>> z = rolling.solve(z0, t, 0.1, 0.4)
+    >>> bool(abs(parts.spiral + parts.centre - z).max() < 1e-14)
     True
     """
     t = _validate.times("t", t)
@@ -345,7 +346,8 @@ def growth_per_turn_ratio(mu0: ArrayLike, k: ArrayLike, comparison: str) -> NDAr
 
     >>> from turntable import rolling
     >>> for comparison in rolling.COMPARISONS:
-    ...     print(comparison, rolling.growth_per_turn_ratio([0.1, 1.0], 0.4, comparison).round(3))
+    ...     ratio = rolling.growth_per_turn_ratio([0.1, 1.0], 0.4, comparison)
+    ...     print(comparison, ratio.round(3))
     equal_coefficient [1.342 0.211]
     equal_power [2.721 1.06 ]
     equal_decay [1.056 0.443]

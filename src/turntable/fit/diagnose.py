@@ -239,7 +239,8 @@ def checked_selection(result: FilmFit, check: Consistency | None) -> FilmFit:
     >>> from turntable.film import Camera, Setup, state_from_si
     >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
     >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
-    >>> film = fit.simulate_film("slipping", 3.0, z0, setup, Camera(30.0, 2e-4, 10.0), seed=2)
+    >>> camera = Camera(30.0, 2e-4, 10.0)
+    >>> film = fit.simulate_film("slipping", 3.0, z0, setup, camera, seed=2)
     >>> wrong = setup._replace(omega=3.5 * 1.01)
     >>> result = fit.fit_film(film, wrong)
     >>> checked = fit.checked_selection(result, fit.consistency(film, wrong, result))

@@ -283,7 +283,8 @@ def frame_noise(t: ArrayLike, xy: ArrayLike) -> float:
     >>> import numpy as np
     >>> from turntable import fit
     >>> t = np.sort(np.random.default_rng(1).uniform(0.0, 2.0, 400))  # uneven steps
-    >>> xy = np.c_[np.cos(t), np.sin(t)] + np.random.default_rng(0).normal(0, 1e-3, (400, 2))
+    >>> noise = np.random.default_rng(0).normal(0, 1e-3, (400, 2))
+    >>> xy = np.c_[np.cos(t), np.sin(t)] + noise
     >>> print(f"{fit.frame_noise(t, xy):.1e}")
     1.0e-03
     """

@@ -159,7 +159,8 @@ def track_video(
     >>> truth = render_video(path, "slipping", 2.0, [7, 0, 0, 0.4, 0, 0], setup, scene)
     >>> track, warnings = track_video(path, ball_radius=0.008, platter_radius=0.15)
     >>> err = np.hypot(track.film.x - truth.film.x, track.film.y - truth.film.y)
-    >>> print(f"{track.film.t.size} frames, Omega {abs(track.calibration.omega):.3f} rad/s, "
+    >>> omega = abs(track.calibration.omega)
+    >>> print(f"{track.film.t.size} frames, Omega {omega:.3f} rad/s, "
     ...       f"rms error {np.sqrt(np.mean(err**2)) / 0.008:.2f} R")
     31 frames, Omega 4.708 rad/s, rms error 0.03 R
     """

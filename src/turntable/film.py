@@ -13,10 +13,9 @@ fields, as spreadsheets and tracking programs write it:
 - a comment line containing the word ``SYNTHETIC`` (upper case) marks the film as
   simulated, not measured (``Film.synthetic``).
 
-`read_film` refuses anything else with a `FilmError` whose message names the file, the
-line and the column.  `write_film` writes a film; synthetic films, with a header that marks
-them SYNTHETIC and gives the true parameters, come from `turntable.fit.simulate_film` and
-`turntable.fit.synthetic_header`.
+`read_film` refuses anything else with a `FilmError` naming the file, the line and the
+column.  `write_film` writes a film; synthetic films (a header marks them SYNTHETIC and gives
+their truth) come from `turntable.fit.simulate_film` and `turntable.fit.synthetic_header`.
 """
 
 from __future__ import annotations
@@ -43,8 +42,7 @@ DELIMITERS = (",", "\t", ";")
 #: Word of a comment line that marks a film as simulated (`turntable.fit.synthetic_header`
 #: writes it).
 SYNTHETIC_MARK = "SYNTHETIC"
-#: A film that ships with the package, for trying ``turntable fit``: 10 s of a SYNTHETIC
-#: slipping ball (mu0 = 3) at 30 frames/s with 0.2 mm of noise; its header gives the truth.
+#: A SYNTHETIC film that ships with the package, for trying ``turntable fit`` (its header).
 EXAMPLE_FILM = Path(__file__).parent / "data" / "SYNTHETIC_slipping.csv"
 _MARK = re.compile(rf"\b{SYNTHETIC_MARK}\b")
 
@@ -116,6 +114,11 @@ class Camera(NamedTuple):
 def rpm_to_omega(rpm: float) -> float:
     """Return the angular velocity in rad/s of ``rpm`` revolutions per minute (2 pi rpm / 60).
 
+    Parameters
+    ----------
+    rpm : float
+        Revolutions per minute, finite and > 0.
+
     Examples
     --------
     >>> from turntable.film import rpm_to_omega
@@ -127,6 +130,11 @@ def rpm_to_omega(rpm: float) -> float:
 
 def check_setup(setup: Setup) -> Setup:
     """Return ``setup`` with its numbers validated (ValueError naming a bad one).
+
+    Parameters
+    ----------
+    setup : Setup
+        Ball and turntable.
 
     Examples
     --------
@@ -149,6 +157,11 @@ def check_setup(setup: Setup) -> Setup:
 
 def frame_times(camera: Camera) -> NDArray[np.float64]:
     """Return the times i / fps of the frames in [0, duration], s.
+
+    Parameters
+    ----------
+    camera : Camera
+        Frame rate and duration.
 
     Examples
     --------
@@ -219,7 +232,12 @@ def state_from_si(
 def state_to_si(state: ArrayLike, setup: Setup) -> dict[str, list[float]]:
     """Return the dimensionless state as position (m), velocity (m/s), spin (rad/s).
 
-    The inverse of `state_from_si`.
+    Parameters
+    ----------
+    state : array_like
+        Dimensionless state (x, y, vx, vy, wx, wy).
+    setup : Setup
+        Ball and turntable (radius, Omega, axis).
 
     Examples
     --------

@@ -272,6 +272,15 @@ def solve(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> NDArray[np.flo
 def spiral_centre(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> NDArray[np.float64]:
     r"""Return the position of the spiral's centre, shape (len(t), 2).
 
+    Parameters
+    ----------
+    z0 : array_like
+        Initial state on the no-slip constraint (x, y, vx, vy, wx, wy).
+    t : array_like
+        1-D array of times >= 0.
+    delta, k : float
+        Rolling-resistance coefficient and inertia ratio, finite and > 0.
+
     Notes
     -----
     :math:`r_c(t) = A_c e^{\lambda_c t}`: it moves, spiralling into the turntable's
@@ -333,6 +342,18 @@ def matched_delta(mu0: ArrayLike, k: ArrayLike, comparison: str) -> NDArray[np.f
 
 def growth_per_turn_ratio(mu0: ArrayLike, k: ArrayLike, comparison: str) -> NDArray[np.float64]:
     r"""Return the slipping spiral's log growth per turn over the rolling one's.
+
+    Parameters
+    ----------
+    mu0, k : float or array_like
+        Slipping friction coefficient and inertia ratio, finite and > 0.
+    comparison : {"equal_coefficient", "equal_power", "equal_decay"}
+        How the rolling coefficient is matched to mu0 (`COMPARISONS`, `matched_delta`).
+
+    Returns
+    -------
+    numpy.ndarray
+        The ratio, of the broadcast shape of mu0 and k.
 
     Notes
     -----

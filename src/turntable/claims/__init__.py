@@ -98,6 +98,16 @@ def claim_ids() -> list[str]:
 def get(claim_id: str) -> Claim:
     """Return the registered `Claim` with identifier ``claim_id``.
 
+    Parameters
+    ----------
+    claim_id : str
+        Identifier of the claim, one of `ORDER`.
+
+    Returns
+    -------
+    Claim
+        The claim.
+
     Raises
     ------
     ValueError
@@ -187,6 +197,17 @@ def evaluate(claim_id: str, params: Mapping[str, Any] | None = None) -> dict[str
 
 def evaluate_all(params: Mapping[str, Any] | None = None) -> list[dict[str, Any]]:
     """Run every check, in the order of the paper; see `evaluate`.
+
+    Parameters
+    ----------
+    params : mapping, optional
+        Parameters of the checks over `DEFAULT_PARAMS` (section ``claims`` of the
+        configuration).
+
+    Returns
+    -------
+    list of dict
+        One record per claim, in the order of `ORDER` (see `evaluate`).
 
     Examples
     --------

@@ -299,11 +299,27 @@ def register(
 
     The order of registration is the order of the report (the paper's order): the
     check modules are imported in the paper's order and register their claims in it.
-    ``expected`` is the verdict the tests require of the check; ``decisive`` the key of the
-    reproduced value whose bound decides that verdict (`turntable.claims.evaluate` refuses
-    a check whose tolerance does not bound it); ``gist`` what it establishes then, in a few
-    words (see `Claim`). Everything the report, the tests and
-    the article say of a claim comes from here: adding a claim is one call.
+    Everything the report, the tests and the article say of a claim comes from here:
+    adding a claim is one call.
+
+    Parameters
+    ----------
+    id : str
+        Stable identifier, ``"<part>.<name>"``.
+    where, claim, paper_value, method, source
+        The attributes of the same names of `Claim`.
+    expected : str
+        The verdict the tests require of the check (one of `VERDICTS`).
+    decisive : str
+        The key of the reproduced value whose bound decides that verdict
+        (`turntable.claims.evaluate` refuses a check whose tolerance does not bound it).
+    gist : str, optional
+        What the check establishes then, in a few words.
+
+    Returns
+    -------
+    callable
+        The decorator, which registers ``check(params) -> Outcome`` and returns it.
 
     Examples
     --------
@@ -364,6 +380,18 @@ def decide(as_stated: bool, otherwise: Verdict = "failed") -> Verdict:
     statement's readings), ``corrected`` when a corrected formula holds, ``undecidable``
     when the truth depends on values the paper does not give, ``failed`` when the numbers
     contradict it.
+
+    Parameters
+    ----------
+    as_stated : bool
+        Whether the paper's statement holds as stated.
+    otherwise : str, optional
+        The verdict when it does not: one of `VERDICTS` other than ``confirmed``.
+
+    Returns
+    -------
+    str
+        The verdict.
 
     Examples
     --------

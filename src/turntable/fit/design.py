@@ -422,6 +422,22 @@ def measurability_json(
 
     ``rig`` is a `turntable.film.Rig` (set-up, camera, start state, mass).
 
+    Parameters
+    ----------
+    table : Measurability
+        A table of `measurability`.
+    probability : float
+        Required probability of selecting the slipping model (`indistinguishable_above`).
+    rig : Rig
+        Set-up, camera, start state and mass of the films of the table.
+    reliable_level : float, optional
+        Largest predicted relative error of a reliable measurement (`reliable_range`).
+
+    Returns
+    -------
+    dict
+        The JSON object.
+
     Examples
     --------
     >>> from turntable import film, fit

@@ -33,6 +33,18 @@ MAX_FRAME_STEP = 1.0
 def frame_step(film: Film, setup: Setup) -> float:
     r"""Return the median step :math:`\Omega (t_{i+1} - t_i)` between frames, rad (0 for one frame).
 
+    Parameters
+    ----------
+    film : Film
+        The film (its frame times).
+    setup : Setup
+        Ball and turntable (Omega).
+
+    Returns
+    -------
+    float
+        The median step, rad.
+
     Examples
     --------
     >>> from turntable import fit

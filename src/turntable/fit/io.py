@@ -246,6 +246,18 @@ def setup_from_json(result: dict[str, Any], model: str | None = None) -> Setup:
     With ``model``, Omega and the axis are that model's (fitted ones with ``--fit-omega``,
     ``--fit-axis``).
 
+    Parameters
+    ----------
+    result : dict
+        A result of `result_json` (``turntable fit``), read back from JSON.
+    model : {"slipping", "rolling_resistance"}, optional
+        The model whose Omega and axis are taken; by default the given ones.
+
+    Returns
+    -------
+    Setup
+        Ball and turntable.
+
     Examples
     --------
     >>> from turntable import fit
@@ -269,6 +281,18 @@ def setup_from_json(result: dict[str, Any], model: str | None = None) -> Setup:
 def fitted_coefficient(result: dict[str, Any], model: str) -> float:
     """Return the coefficient with which a model's path is drawn: the fitted value, or
     where the search stopped when it is reported as a limit (``*_search_bound``).
+
+    Parameters
+    ----------
+    result : dict
+        A result of `result_json` (``turntable fit``), read back from JSON.
+    model : {"slipping", "rolling_resistance"}
+        The model.
+
+    Returns
+    -------
+    float
+        The dimensionless coefficient.
 
     Examples
     --------

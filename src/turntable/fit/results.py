@@ -159,6 +159,20 @@ def aic(rss: float, n_observations: int, n_params: int) -> float:
     The + 1 counts the noise variance, estimated as RSS / N.  An exact fit (RSS = 0,
     only for noiseless data) counts as RSS = the smallest positive double.
 
+    Parameters
+    ----------
+    rss : float
+        Residual sum of squares, >= 0.
+    n_observations : int
+        Number N of fitted coordinates.
+    n_params : int
+        Number p of fitted parameters.
+
+    Returns
+    -------
+    float
+        The criterion.
+
     Examples
     --------
     >>> from turntable import fit

@@ -79,6 +79,16 @@ def synthetic_header(
 ) -> list[str]:
     """Return the comment lines that mark a film SYNTHETIC and give its true parameters.
 
+    Parameters
+    ----------
+    model, coefficient, state0, setup, camera, seed
+        The arguments of `simulate_film` that made the film.
+
+    Returns
+    -------
+    list of str
+        The comment lines, without the ``#``.
+
     Examples
     --------
     >>> from turntable import fit

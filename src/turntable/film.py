@@ -7,7 +7,7 @@ fields, as spreadsheets and tracking programs write it:
 - lines whose first non-blank character is ``#`` are comments, blank lines are skipped;
 - the first other line is the header; it names at least the columns ``t``, ``x`` and
   ``y`` (in any order; other columns are ignored); its delimiter is the file's: a comma,
-  or else a tab, or else a semicolon (``DELIMITERS``); a field may be quoted (``"t"``);
+  or else a tab, or else a semicolon (`DELIMITERS`); a field may be quoted (``"t"``);
 - every further line is one frame, with as many fields as the header; t, x and y are
   finite numbers and t increases strictly from frame to frame;
 - a comment line containing the word ``SYNTHETIC`` (upper case) marks the film as

@@ -441,28 +441,28 @@ def test_no_selection_between_two_exact_fits(
     assert "reproduce the positions to rounding" in out["selection"]["reason"]
 
 
-def _readme_example() -> tuple[list[str], str]:
-    """The command and the JSON excerpt of the README's worked example ("Fitting your own
-    film")."""
-    readme = (ROOT / "README.md").read_text(encoding="utf-8")
-    section = readme.split("## Fitting your own film", 1)[1].split("\n## ", 1)[0]
-    (command,) = [
-        line for line in section.splitlines() if line.startswith(".venv/bin/turntable fit ")
-    ]
-    excerpt = section.split("```json", 1)[1].split("```", 1)[0]
+def _worked_example() -> tuple[list[str], str]:
+    """The command and the JSON excerpt of the worked example of docs/fitting.md ("A
+    worked example")."""
+    page = (ROOT / "docs" / "fitting.md").read_text(encoding="utf-8")
+    section = page.split("## A worked example", 1)[1].split("\n## ", 1)[0]
+    shell = section.split("```sh\n", 1)[1].split("```", 1)[0].replace("\\\n", " ")
+    (command,) = [line for line in shell.splitlines() if line.startswith(".venv/bin/turntable ")]
+    excerpt = section.split("```text", 1)[1].split("```", 1)[0]
     return command.split()[2:], excerpt
 
 
-def test_the_readme_example_is_what_the_command_prints(
+def test_the_worked_example_is_what_the_command_prints(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    """The README's worked example, run on the synthetic film that the configuration in the
-    repository makes (as rule synthetic_film writes it): every number of its JSON excerpt
-    is the command's, to the digits shown, and so are the model selected and the flags."""
+    """The worked example of docs/fitting.md, run on the synthetic film that the
+    configuration in the repository makes (as rule synthetic_film writes it): every number
+    of its JSON excerpt is the command's, to the digits shown, and so are the model
+    selected and the flags."""
     import re
 
     config = full_config()
-    args, excerpt = _readme_example()
+    args, excerpt = _worked_example()
     name = Path(args[0]).stem
     (spec,) = [f for f in config["synthetic_film"]["films"] if f["name"] == name]
     rig = film.rig_from_config(config["film"])

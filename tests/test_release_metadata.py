@@ -16,8 +16,6 @@ import jsonschema
 import pytest
 import yaml
 
-from ci_build import full_config
-
 ROOT = Path(__file__).resolve().parents[1]
 SCHEMA = json.loads(
     (ROOT / "tests" / "data" / "citation-file-format-1.2.0.schema.json").read_text()
@@ -46,7 +44,8 @@ def test_citation_cff_is_valid_cff_1_2_0() -> None:
 
 
 def test_metadata_agree() -> None:
-    """Version, licence, title and repository are the same in every metadata file."""
+    """Version, licence and title are the same in every metadata file, and none names a
+    repository address: the project has none it can confirm (no remote of the clone)."""
     cff = _cff()
     zenodo = json.loads((ROOT / ".zenodo.json").read_text(encoding="utf-8"))
     project = _pyproject()["project"]
@@ -58,11 +57,10 @@ def test_metadata_agree() -> None:
     assert cff["title"] == zenodo["title"]
     related = {r["identifier"]: r for r in zenodo["related_identifiers"]}
     assert related[PAPER_DOI]["scheme"] == "doi"
-    assert cff["repository-code"] in related
+    assert "repository-code" not in cff
+    assert [r for r in related.values() if r["scheme"] == "url"] == []
     assert project["license-files"] == ["LICENSE"]
     assert (ROOT / "LICENSE").read_text().startswith("MIT License")
-    config = full_config()
-    assert config["paper"]["repository"] == cff["repository-code"]
 
 
 def _release_notes():

@@ -18,11 +18,24 @@ from turntable.spectrum import _spectrum
 
 
 def power_rolling(z: ArrayLike, delta: float) -> NDArray[np.float64]:
-    """Return the power dissipated by the rolling-resistance torque, delta |w_h|^2.
+    r"""Return the power dissipated by the rolling-resistance torque, delta |w_h|^2.
+
+    Parameters
+    ----------
+    z : array_like
+        State(s) with last axis (x, y, vx, vy, wx, wy).
+    delta : float
+        Rolling-resistance coefficient, > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        The power, of shape ``z.shape[:-1]``.
 
     Notes
     -----
-    (R3): -M . w = delta (wx^2 + wy^2), in units m R^2 Omega^3.
+    (R3): :math:`-M \cdot \omega = \delta (\omega_x^2 + \omega_y^2)`, in units
+    :math:`m R^2 \Omega^3`.
 
     Examples
     --------
@@ -36,12 +49,24 @@ def power_rolling(z: ArrayLike, delta: float) -> NDArray[np.float64]:
 
 
 def power_slipping(z: ArrayLike, mu0: float) -> NDArray[np.float64]:
-    """Return the power dissipated by viscous slipping friction, mu0 |u|^2.
+    r"""Return the power dissipated by viscous slipping friction, mu0 |u|^2.
+
+    Parameters
+    ----------
+    z : array_like
+        State(s) with last axis (x, y, vx, vy, wx, wy).
+    mu0 : float
+        Friction coefficient, > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        The power, of shape ``z.shape[:-1]``.
 
     Notes
     -----
-    Section 1 of the paper: F = -mu0 u at the contact point, which slides
-    with u relative to the plane; in units m R^2 Omega^3.
+    Section 1 of the paper: :math:`F = -\mu_0 u` at the contact point, which slides
+    with u relative to the plane; in units :math:`m R^2 \Omega^3`.
 
     Examples
     --------
@@ -78,7 +103,7 @@ def _slipping_mode(mu0: ArrayLike, k: ArrayLike) -> tuple[NDArray[np.float64], .
 
 
 def equal_power_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
-    """Return delta at which rolling along the slipping path dissipates the slipping power.
+    r"""Return delta at which rolling along the slipping path dissipates the slipping power.
 
     Parameters
     ----------
@@ -88,35 +113,40 @@ def equal_power_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
     Returns
     -------
     numpy.ndarray
-        delta_P = mu0 |(k + 1) lambda_+ - i k|^2 / (k^2 |1 + i lambda_+|^2).
+        :math:`\delta_P = \mu_0 |(k + 1) \lambda_+ - i k|^2 / (k^2 |1 + i \lambda_+|^2)`.
 
     Notes
     -----
     Comparison (b), equal mean dissipated power on the same motion: the same path
     of the centre, each mechanism with its own kinematics.  The path is the
     slipping model's spiral about the turntable's axis, its growing mode
-    r = rho e^{lambda_+ t} (lambda_+ = alpha1 + i beta of (2.5)).
+    :math:`r = \rho e^{\lambda_+ t}` (:math:`\lambda_+ = \alpha_1 + i\beta` of (2.5)).
 
-    - Slipping: the mode has c = v - i k w = 0, so v = lambda_+ r and
-      w = -i lambda_+ r / k; the contact point slides with
-      u = v + i w - i r = ((k + 1) lambda_+ - i k) r / k and friction dissipates
-      mu0 |u|^2.
+    - Slipping: the mode has :math:`c = v - i k \omega = 0`, so :math:`v = \lambda_+ r` and
+      :math:`\omega = -i \lambda_+ r / k`; the contact point slides with
+      :math:`u = v + i \omega - i r = ((k + 1) \lambda_+ - i k) r / k` and friction
+      dissipates :math:`\mu_0 |u|^2`.
     - Rolling along the same path: the no-slip constraint (R1) fixes the spin,
-      w = r + i v = (1 + i lambda_+) r, and the torque (R3) dissipates
-      delta |w|^2.
+      :math:`\omega = r + i v = (1 + i \lambda_+) r`, and the torque (R3) dissipates
+      :math:`\delta |\omega|^2`.
 
-    Both powers are |r|^2 = |rho|^2 e^{2 alpha1 t} times a constant, so they
-    are equal at every instant, hence on average, for::
+    Both powers are :math:`|r|^2 = |\rho|^2 e^{2 \alpha_1 t}` times a constant, so they
+    are equal at every instant, hence on average, for
 
-        delta_P = mu0 |(k + 1) lambda_+ - i k|^2 / (k^2 |1 + i lambda_+|^2).
+    .. math::
 
-    Evaluated as (sqrt(mu0) |(k + 1) alpha1 + i y| / (k |(1 - beta) + i alpha1|))^2
-    with y = (k + 1) beta - k written without cancellation; 1 - beta > 1 / (k + 1)
-    does not cancel either (beta < k / (k + 1)).  Limits: delta_P / mu0 -> 1 as
-    mu0 -> 0 (lambda_+ ~ sqrt(i mu0), so u ~ -i r and w ~ r: at small mu0 the
-    ball slides with the plane's speed under it and would roll with unit spin);
-    delta_P ~ k^4 / (mu0 (k + 1)^2) as mu0 -> infinity, where the slipping
-    motion becomes the no-slip one and both spins agree.  `own_spin_power_delta`
+        \delta_P = \frac{\mu_0 |(k + 1) \lambda_+ - i k|^2}{k^2 |1 + i \lambda_+|^2}.
+
+    Evaluated as
+    :math:`\left(\sqrt{\mu_0}\, |(k + 1) \alpha_1 + i y| / (k |(1 - \beta) + i \alpha_1|)\right)^2`
+    with :math:`y = (k + 1) \beta - k` written without cancellation;
+    :math:`1 - \beta > 1 / (k + 1)` does not cancel either (:math:`\beta < k / (k + 1)`).
+    Limits: :math:`\delta_P / \mu_0 \to 1` as :math:`\mu_0 \to 0`
+    (:math:`\lambda_+ \sim \sqrt{i \mu_0}`, so :math:`u \sim -i r` and :math:`\omega \sim r`:
+    at small :math:`\mu_0` the ball slides with the plane's speed under it and would roll
+    with unit spin); :math:`\delta_P \sim k^4 / (\mu_0 (k + 1)^2)` as
+    :math:`\mu_0 \to \infty`, where the slipping motion becomes the no-slip one and both
+    spins agree.  `own_spin_power_delta`
     is the alternative that charges the torque on the slipping ball's own spin.
 
     Examples
@@ -132,7 +162,7 @@ def equal_power_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
 
 
 def own_spin_power_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
-    """Return delta that matches the slipping power with the torque on the slipping spin.
+    r"""Return delta that matches the slipping power with the torque on the slipping spin.
 
     Parameters
     ----------
@@ -142,19 +172,20 @@ def own_spin_power_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
     Returns
     -------
     numpy.ndarray
-        delta_S = mu0 |(k + 1) lambda_+ - i k|^2 / |lambda_+|^2.
+        :math:`\delta_S = \mu_0 |(k + 1) \lambda_+ - i k|^2 / |\lambda_+|^2`.
 
     Notes
     -----
     NOT comparison (b): the alternative reading it replaces, kept so that the
     difference can be shown.  On the slipping spiral about the axis it charges the
-    rolling-resistance power delta |w|^2 on the slipping ball's own spin
-    w = -i lambda_+ r / k, which a ball rolling along that path cannot have (its
-    spin is w = r + i v).  mu0 |u|^2 = delta_S |w|^2 at every instant;
-    delta_S -> k^2 as mu0 -> 0 (the slipping spin vanishes like sqrt(mu0) while
-    the slip does not), delta_S ~ k^4 / (mu0 (k + 1)^2) as mu0 -> infinity (as
+    rolling-resistance power :math:`\delta |\omega|^2` on the slipping ball's own spin
+    :math:`\omega = -i \lambda_+ r / k`, which a ball rolling along that path cannot have
+    (its spin is :math:`\omega = r + i v`).  :math:`\mu_0 |u|^2 = \delta_S |\omega|^2` at
+    every instant; :math:`\delta_S \to k^2` as :math:`\mu_0 \to 0` (the slipping spin
+    vanishes like :math:`\sqrt{\mu_0}` while the slip does not),
+    :math:`\delta_S \sim k^4 / (\mu_0 (k + 1)^2)` as :math:`\mu_0 \to \infty` (as
     `equal_power_delta`).  Same evaluation as `equal_power_delta`, with
-    |lambda_+| = beta |1 + i alpha1 / beta|.
+    :math:`|\lambda_+| = \beta |1 + i \alpha_1 / \beta|`.
 
     Examples
     --------
@@ -168,7 +199,7 @@ def own_spin_power_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
 
 
 def equal_decay_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
-    """Return delta at which the rolling centre decays at the slipping |alpha2|.
+    r"""Return delta at which the rolling centre decays at the slipping |alpha2|.
 
     Parameters
     ----------
@@ -178,19 +209,20 @@ def equal_decay_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
     Returns
     -------
     numpy.ndarray
-        The unique delta with |sigma_c(delta, k)| = |alpha2(mu0, k)|.
+        The unique :math:`\delta` with :math:`|\sigma_c(\delta, k)| = |\alpha_2(\mu_0, k)|`.
 
     Notes
     -----
-    Comparison (c): equal decay rates of the non-growing parts (z- of (2.7)
-    and the moving centre).  |sigma_c| = (delta + p) / (2 (k + 1)) increases
-    strictly with delta and lies between delta / (2 (k + 1)) and delta / k,
-    so the root lies in [k |alpha2|, 2 (k + 1) |alpha2|].  The lower end is the
-    root's limit for small mu0 (where |sigma_c| = delta / k (1 - O(delta))), so
-    in doubles it can be the root itself: Brent's method brackets it in
-    [k |alpha2| / 2, 4 (k + 1) |alpha2|], where the function changes sign by at
-    least a half at either end, and finds it to a relative 1e-15.  Large mu0:
-    delta ~ mu0 (k+1)^2 / k; small mu0: delta ~ k |alpha2| ~ k sqrt(mu0 / 2).
+    Comparison (c): equal decay rates of the non-growing parts (:math:`z_-` of (2.7)
+    and the moving centre).  :math:`|\sigma_c| = (\delta + p) / (2 (k + 1))` increases
+    strictly with :math:`\delta` and lies between :math:`\delta / (2 (k + 1))` and
+    :math:`\delta / k`, so the root lies in :math:`[k |\alpha_2|, 2 (k + 1) |\alpha_2|]`.
+    The lower end is the root's limit for small :math:`\mu_0` (where
+    :math:`|\sigma_c| = \delta / k\, (1 - O(\delta))`), so in doubles it can be the root
+    itself: Brent's method brackets it in :math:`[k |\alpha_2| / 2, 4 (k + 1) |\alpha_2|]`,
+    where the function changes sign by at least a half at either end, and finds it to a
+    relative :math:`10^{-15}`.  Large :math:`\mu_0`: :math:`\delta \sim \mu_0 (k+1)^2 / k`;
+    small :math:`\mu_0`: :math:`\delta \sim k |\alpha_2| \sim k \sqrt{\mu_0 / 2}`.
 
     Examples
     --------

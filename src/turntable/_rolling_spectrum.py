@@ -15,14 +15,15 @@ from turntable import _validate
 
 
 def system_matrix(delta: float, k: float) -> NDArray[np.float64]:
-    """Return the 4x4 matrix of the rolling model on (x, y, vx, vy).
+    r"""Return the 4x4 matrix of the rolling model on (x, y, vx, vy).
 
     Parameters
     ----------
     delta : float
-        Dimensionless rolling-resistance coefficient delta_dim / (m R^2 Omega) > 0.
+        Dimensionless rolling-resistance coefficient
+        :math:`\delta_\text{dim} / (m R^2 \Omega) > 0`.
     k : float
-        Inertia ratio I / (m R^2) > 0.
+        Inertia ratio :math:`I / (m R^2) > 0`.
 
     Returns
     -------
@@ -31,11 +32,14 @@ def system_matrix(delta: float, k: float) -> NDArray[np.float64]:
 
     Notes
     -----
-    Equation (R4) of the module docstring in real form::
+    Equation (R4) of :doc:`/theory` in real form:
 
-        M = [[0, I], [delta J / (k + 1), (k J - delta I) / (k + 1)]]
+    .. math::
 
-    with J = [[0, -1], [1, 0]]; w = r + J v follows from the constraint.
+        M = \begin{pmatrix} 0 & I_2 \\ \frac{\delta J}{k + 1} & \frac{k J - \delta I_2}{k + 1}
+            \end{pmatrix}, \qquad J = \begin{pmatrix} 0 & -1 \\ 1 & 0 \end{pmatrix};
+
+    :math:`\omega = r + J v` follows from the constraint.
 
     Examples
     --------
@@ -44,7 +48,8 @@ def system_matrix(delta: float, k: float) -> NDArray[np.float64]:
     >>> import numpy as np
     >>> from turntable import rolling
     >>> lam = np.linalg.eigvals(rolling.system_matrix(0.1, 0.4))
-    >>> bool(np.allclose(np.sort_complex(lam), np.sort_complex(rolling.eigenvalues(0.1, 0.4))))
+    >>> closed_form = rolling.eigenvalues(0.1, 0.4)
+    >>> bool(np.allclose(np.sort_complex(lam), np.sort_complex(closed_form)))
     True
     """
     delta = _validate.positive_scalar("delta", delta)
@@ -57,15 +62,16 @@ def system_matrix(delta: float, k: float) -> NDArray[np.float64]:
 
 
 class RollingSpectrum(NamedTuple):
-    """Real and imaginary parts of the two roots of the rolling model.
+    r"""Real and imaginary parts of the two roots of the rolling model.
 
     Attributes
     ----------
     sigma_g, nu_g : numpy.ndarray
-        Growth rate (> 0) and rate of turning of the spiral, lambda_g = sigma_g + i nu_g.
+        Growth rate (> 0) and rate of turning of the spiral,
+        :math:`\lambda_g = \sigma_g + i\nu_g`.
     sigma_c, nu_c : numpy.ndarray
         Decay rate (< 0) and rate of turning of the spiral's centre,
-        lambda_c = sigma_c + i nu_c.
+        :math:`\lambda_c = \sigma_c + i\nu_c`.
     """
 
     sigma_g: NDArray[np.float64]
@@ -97,7 +103,7 @@ def _spectrum_rolling(delta: NDArray[np.float64], k: NDArray[np.float64]) -> Rol
 
 
 def spectrum(delta: ArrayLike, k: ArrayLike) -> RollingSpectrum:
-    """Return sigma_g, nu_g, sigma_c, nu_c of the rolling model.
+    r"""Return sigma_g, nu_g, sigma_c, nu_c of the rolling model.
 
     Parameters
     ----------
@@ -111,8 +117,8 @@ def spectrum(delta: ArrayLike, k: ArrayLike) -> RollingSpectrum:
 
     Notes
     -----
-    The closed forms of the module docstring (roots of
-    (k+1) lambda^2 + (delta - i k) lambda - i delta), each a quotient of
+    The closed forms of :doc:`/theory` (roots of
+    :math:`(k+1) \lambda^2 + (\delta - i k) \lambda - i \delta`), each a quotient of
     positive numbers, accurate to a few units in the last place.
 
     Examples
@@ -129,17 +135,23 @@ def spectrum(delta: ArrayLike, k: ArrayLike) -> RollingSpectrum:
 
 
 def eigenvalues(delta: ArrayLike, k: ArrayLike) -> NDArray[np.complex128]:
-    """Return the four eigenvalues of the real linear system `system_matrix`.
+    r"""Return the four eigenvalues of the real linear system `system_matrix`.
+
+    Parameters
+    ----------
+    delta, k : float or array_like
+        Rolling-resistance coefficient and inertia ratio, finite and > 0;
+        broadcast against each other.
 
     Returns
     -------
     numpy.ndarray
         Complex, shape ``broadcast(delta, k).shape + (4,)``:
-        (lambda_g, conj lambda_g, lambda_c, conj lambda_c).
+        :math:`(\lambda_g, \bar\lambda_g, \lambda_c, \bar\lambda_c)`.
 
     Notes
     -----
-    See `spectrum` and the module docstring.
+    See `spectrum` and :doc:`/theory`.
 
     Examples
     --------
@@ -160,16 +172,27 @@ def eigenvalues(delta: ArrayLike, k: ArrayLike) -> NDArray[np.complex128]:
 
 
 def growth_rate(delta: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
-    """Return sigma_g, the growth rate per unit time of the spiral's radius.
+    r"""Return sigma_g, the growth rate per unit time of the spiral's radius.
+
+    Parameters
+    ----------
+    delta, k : float or array_like
+        Rolling-resistance coefficient and inertia ratio, finite and > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        :math:`\sigma_g`, of the broadcast shape.
 
     Notes
     -----
-    sigma_g = 4 delta q / (A (k + 2 + q)) (module docstring);
-    delta / (k (k + 1)) for small delta, about 1 / delta for large delta.
+    :math:`\sigma_g = 4 \delta q / (A (k + 2 + q))` (:doc:`/theory`);
+    :math:`\delta / (k (k + 1))` for small :math:`\delta`, about :math:`1 / \delta` for
+    large :math:`\delta`.
 
     Examples
     --------
-    About delta / (k (k + 1)) for small delta:
+    About :math:`\delta / (k (k + 1))` for small :math:`\delta`:
 
     >>> from turntable import rolling
     >>> rolling.growth_rate([1e-4, 0.1], 0.4).round(6)
@@ -179,15 +202,25 @@ def growth_rate(delta: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
 
 
 def log_growth_per_turn(delta: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
-    """Return 2 pi sigma_g / nu_g, the logarithm of the spiral's growth per turn.
+    r"""Return 2 pi sigma_g / nu_g, the logarithm of the spiral's growth per turn.
+
+    Parameters
+    ----------
+    delta, k : float or array_like
+        Rolling-resistance coefficient and inertia ratio, finite and > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        :math:`2\pi \sigma_g / \nu_g`, of the broadcast shape.
 
     Notes
     -----
-    About 2 pi delta / k^2 for small delta and 2 pi / delta for large delta.
+    About :math:`2\pi \delta / k^2` for small :math:`\delta` and :math:`2\pi / \delta` for
+    large :math:`\delta`.
 
     Examples
     --------
-    About 2 pi delta / k^2 for small delta, 2 pi / delta for large delta:
 
     >>> from turntable import rolling
     >>> print(rolling.log_growth_per_turn([1e-4, 1e4], 0.4))
@@ -198,16 +231,25 @@ def log_growth_per_turn(delta: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
 
 
 def centre_decay_rate(delta: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
-    """Return |sigma_c|, the rate at which the spiral's centre approaches the axis.
+    r"""Return |sigma_c|, the rate at which the spiral's centre approaches the axis.
+
+    Parameters
+    ----------
+    delta, k : float or array_like
+        Rolling-resistance coefficient and inertia ratio, finite and > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        :math:`|\sigma_c|`, of the broadcast shape.
 
     Notes
     -----
-    |sigma_c| = (delta + p) / (2 (k + 1)), between delta / (2 (k + 1)) and
-    delta / k; it is the decay rate of the non-growing part of the motion.
+    :math:`|\sigma_c| = (\delta + p) / (2 (k + 1))`, between :math:`\delta / (2 (k + 1))`
+    and :math:`\delta / k`; it is the decay rate of the non-growing part of the motion.
 
     Examples
     --------
-    Between delta / (2 (k + 1)) and delta / k:
 
     >>> from turntable import rolling
     >>> print(f"{rolling.centre_decay_rate(0.1, 0.4):.6f}")

@@ -73,9 +73,21 @@ def _validator(uri: str) -> Any:
 
 
 def validate(config: dict[str, Any], schema: str | Path) -> list[str]:
-    """Fill in the defaults of `config` from `schema` and return one line per problem.
+    """Fill in the defaults of ``config`` from ``schema`` and return one line per problem.
 
     Each line is the key's path (``section.key[i]``) and what is expected.
+
+    Parameters
+    ----------
+    config : dict
+        The configuration (sections of ``config/config.yaml``); filled in place.
+    schema : str or pathlib.Path
+        Path of the JSON Schema (``workflow/schemas/config.schema.yaml``).
+
+    Returns
+    -------
+    list of str
+        One line per problem; empty when the configuration is valid.
 
     Examples
     --------
@@ -104,6 +116,16 @@ def validate(config: dict[str, Any], schema: str | Path) -> list[str]:
 def problems(config: Mapping[str, Any]) -> list[str]:
     """Return one line per problem of a configuration that passed `validate`: the key
     (``section.key[i]``) and what is expected.
+
+    Parameters
+    ----------
+    config : mapping
+        A configuration that passed `validate` (its defaults filled in).
+
+    Returns
+    -------
+    list of str
+        One line per problem; empty when there is none.
 
     Examples
     --------

@@ -11,12 +11,11 @@ fields, as spreadsheets and tracking programs write it:
 - every further line is one frame, with as many fields as the header; t, x and y are
   finite numbers and t increases strictly from frame to frame;
 - a comment line containing the word ``SYNTHETIC`` (upper case) marks the film as
-  simulated, not measured (`Film.synthetic`).
+  simulated, not measured (``Film.synthetic``).
 
-`read_film` refuses anything else with a `FilmError` whose message names the file, the
-line and the column.  `write_film` writes a film; synthetic films, with a header that marks
-them SYNTHETIC and gives the true parameters, come from `turntable.fit.simulate_film` and
-`turntable.fit.synthetic_header`.
+`read_film` refuses anything else with a `FilmError` naming the file, the line and the
+column.  `write_film` writes a film; synthetic films (a header marks them SYNTHETIC and gives
+their truth) come from `turntable.fit.simulate_film` and `turntable.fit.synthetic_header`.
 """
 
 from __future__ import annotations
@@ -43,6 +42,8 @@ DELIMITERS = (",", "\t", ";")
 #: Word of a comment line that marks a film as simulated (`turntable.fit.synthetic_header`
 #: writes it).
 SYNTHETIC_MARK = "SYNTHETIC"
+#: A SYNTHETIC film that ships with the package, for trying ``turntable fit`` (its header).
+EXAMPLE_FILM = Path(__file__).parent / "data" / "SYNTHETIC_slipping.csv"
 _MARK = re.compile(rf"\b{SYNTHETIC_MARK}\b")
 
 
@@ -81,7 +82,7 @@ class Setup(NamedTuple):
         Angular velocity Omega of the turntable, rad/s, counterclockwise in the (x, y)
         coordinates of the film (from the x axis towards the y axis).
     k : float
-        Inertia ratio I / (m R^2) of the ball (2/5 for a homogeneous ball).
+        Inertia ratio :math:`I / (m R^2)` of the ball (2/5 for a homogeneous ball).
     axis : tuple of float
         Position (x, y) of the turntable's axis in the film's coordinates, m.
     """
@@ -113,6 +114,11 @@ class Camera(NamedTuple):
 def rpm_to_omega(rpm: float) -> float:
     """Return the angular velocity in rad/s of ``rpm`` revolutions per minute (2 pi rpm / 60).
 
+    Parameters
+    ----------
+    rpm : float
+        Revolutions per minute, finite and > 0.
+
     Examples
     --------
     >>> from turntable.film import rpm_to_omega
@@ -124,6 +130,11 @@ def rpm_to_omega(rpm: float) -> float:
 
 def check_setup(setup: Setup) -> Setup:
     """Return ``setup`` with its numbers validated (ValueError naming a bad one).
+
+    Parameters
+    ----------
+    setup : Setup
+        Ball and turntable.
 
     Examples
     --------
@@ -146,6 +157,11 @@ def check_setup(setup: Setup) -> Setup:
 
 def frame_times(camera: Camera) -> NDArray[np.float64]:
     """Return the times i / fps of the frames in [0, duration], s.
+
+    Parameters
+    ----------
+    camera : Camera
+        Frame rate and duration.
 
     Examples
     --------
@@ -216,7 +232,12 @@ def state_from_si(
 def state_to_si(state: ArrayLike, setup: Setup) -> dict[str, list[float]]:
     """Return the dimensionless state as position (m), velocity (m/s), spin (rad/s).
 
-    The inverse of `state_from_si`.
+    Parameters
+    ----------
+    state : array_like
+        Dimensionless state (x, y, vx, vy, wx, wy).
+    setup : Setup
+        Ball and turntable (radius, Omega, axis).
 
     Examples
     --------
@@ -263,9 +284,10 @@ def rig_from_config(section: Mapping[str, Any]) -> Rig:
     --------
     >>> from turntable.film import rig_from_config
     >>> rig = rig_from_config({
-    ...     "radius_m": 0.005, "mass_kg": 0.00411, "k": 0.4, "rpm": 33.3, "axis_m": [0, 0],
-    ...     "fps": 240.0, "noise_m": 2e-4, "duration_s": 10.0, "start_position_m": [0.05, 0],
-    ...     "start_velocity_m_s": [0, 0], "start_spin_rad_s": [0, 0]})
+    ...     "radius_m": 0.005, "mass_kg": 0.00411, "k": 0.4, "rpm": 33.3,
+    ...     "axis_m": [0, 0], "fps": 240.0, "noise_m": 2e-4, "duration_s": 10.0,
+    ...     "start_position_m": [0.05, 0], "start_velocity_m_s": [0, 0],
+    ...     "start_spin_rad_s": [0, 0]})
     >>> rig.camera, rig.state0
     (Camera(fps=240.0, noise=0.0002, duration=10.0), array([10.,  0.,  0.,  0.,  0.,  0.]))
     """
@@ -342,7 +364,8 @@ def read_film(
     >>> with open(path, "w") as f:
     ...     _ = f.write(os.linesep.join(lines))
     >>> read_film(path)
-    Film(t=array([0. , 0.1]), x=array([0.05 , 0.049]), y=array([0.   , 0.017]), synthetic=False)
+    Film(t=array([0. , 0.1]), x=array([0.05 , 0.049]),
+         y=array([0.   , 0.017]), synthetic=False)
     >>> read_film(path, min_rows=15, why="for a fit")
     Traceback (most recent call last):
     ...
@@ -448,7 +471,8 @@ def write_film(
     >>> import os, tempfile
     >>> from turntable.film import Film, read_film, write_film
     >>> path = os.path.join(tempfile.mkdtemp(), "film.csv")
-    >>> write_film(path, Film([0.0, 0.1], [0.05, 0.049], [0.0, 0.017]), ["SYNTHETIC example"])
+    >>> film = Film([0.0, 0.1], [0.05, 0.049], [0.0, 0.017])
+    >>> write_film(path, film, ["SYNTHETIC example"])
     >>> with open(path) as f:
     ...     print(f.read())
     # SYNTHETIC example

@@ -16,7 +16,7 @@ from turntable.spectrum import Expansion
 
 
 def small_friction_expansion(mu0: ArrayLike, k: ArrayLike) -> Expansion:
-    """Return the leading small-mu0 behaviour of alpha1, alpha2 and beta.
+    r"""Return the leading small-mu0 behaviour of alpha1, alpha2 and beta.
 
     Parameters
     ----------
@@ -26,20 +26,28 @@ def small_friction_expansion(mu0: ArrayLike, k: ArrayLike) -> Expansion:
     Returns
     -------
     Expansion
-        ``alpha1 = sqrt(mu0/2) - mu``, ``alpha2 = -sqrt(mu0/2) - mu`` and
-        ``beta = sqrt(mu0/2)``, with ``mu = mu0 (k + 1) / (2 k)`` of (2.2).
+        :math:`\alpha_1 = \sqrt{\mu_0/2} - \mu`, :math:`\alpha_2 = -\sqrt{\mu_0/2} - \mu` and
+        :math:`\beta = \sqrt{\mu_0/2}`, with :math:`\mu = \mu_0 (k + 1) / (2 k)` of (2.2).
 
     Notes
     -----
-    From (2.5) with eps = 4 k^2 / (mu0 (k+1)^2) -> infinity as mu0 -> 0:
-    a = sqrt(eps/2) (1 + 1/(2 eps) + O(eps^-2)),
-    b = sqrt(eps/2) (1 - 1/(2 eps) + O(eps^-2)) and mu sqrt(eps/2) = sqrt(mu0/2),
-    so each returned value has an error O(mu0^(3/2)).  To leading order all three
-    rates are sqrt(mu0/2) in size.
+    From (2.5) with :math:`\varepsilon = 4 k^2 / (\mu_0 (k+1)^2) \to \infty` as
+    :math:`\mu_0 \to 0`:
+
+    .. math::
+
+        a = \sqrt{\varepsilon/2}\, \left(1 + \tfrac{1}{2\varepsilon} + O(\varepsilon^{-2})\right),
+        \quad
+        b = \sqrt{\varepsilon/2}\, \left(1 - \tfrac{1}{2\varepsilon} + O(\varepsilon^{-2})\right),
+        \quad
+        \mu \sqrt{\varepsilon/2} = \sqrt{\mu_0/2},
+
+    so each returned value has an error :math:`O(\mu_0^{3/2})`.  To leading order all three
+    rates are :math:`\sqrt{\mu_0/2}` in size.
 
     Examples
     --------
-    Against the exact roots at mu0 = 1e-3:
+    Against the exact roots at :math:`\mu_0 = 10^{-3}`:
 
     >>> from turntable import small_friction_expansion, spectrum
     >>> approx, exact = small_friction_expansion(1e-3, 0.4), spectrum(1e-3, 0.4)
@@ -55,17 +63,22 @@ def small_friction_expansion(mu0: ArrayLike, k: ArrayLike) -> Expansion:
 
 
 def nonholonomic_period(k: ArrayLike) -> NDArray[np.float64]:
-    """Return the period 2 pi (k + 1) / k of the no-slip motion of the centre.
+    r"""Return the period 2 pi (k + 1) / k of the no-slip motion of the centre.
 
     Parameters
     ----------
     k : float or array_like
         Inertia ratio, finite and > 0.
 
+    Returns
+    -------
+    numpy.ndarray
+        :math:`2\pi (k + 1) / k`, of the shape of ``k``.
+
     Notes
     -----
-    Equation (3.3): without slip the centre circles about (x0, y0) of (2.8)
-    at the constant rate k / (k + 1) (2/7 of the plane's rate for k = 2/5).
+    Equation (3.3): without slip the centre circles about :math:`(x_0, y_0)` of (2.8)
+    at the constant rate :math:`k / (k + 1)` (2/7 of the plane's rate for k = 2/5).
 
     Examples
     --------
@@ -78,7 +91,7 @@ def nonholonomic_period(k: ArrayLike) -> NDArray[np.float64]:
 
 
 def limit_error(z0: ArrayLike, t: ArrayLike, mu0: ArrayLike, k: float) -> NDArray[np.float64]:
-    """Return the largest distance between the slipping and the no-slip centre.
+    r"""Return the largest distance between the slipping and the no-slip centre.
 
     Parameters
     ----------
@@ -94,17 +107,17 @@ def limit_error(z0: ArrayLike, t: ArrayLike, mu0: ArrayLike, k: float) -> NDArra
     Returns
     -------
     numpy.ndarray
-        Same shape as `mu0`: ``max over t of |r(t; mu0) - r_nh(t)|``, with r the
-        centre from `solve` and r_nh the centre from `nonholonomic`.
+        Same shape as ``mu0``: :math:`\max_t |r(t; \mu_0) - r_{nh}(t)|`, with r the
+        centre from `solve` and :math:`r_{nh}` the centre from `nonholonomic`.
 
     Notes
     -----
     Section 3, (3.3): on a fixed interval the solution tends to the no-slip one
-    started from `no_slip_state` (z0); the position error is O(1/mu0).
+    started from `no_slip_state` (z0); the position error is :math:`O(1/\mu_0)`.
 
     Examples
     --------
-    The error falls like 1/mu0:
+    The error falls like :math:`1/\mu_0`:
 
     >>> import numpy as np
     >>> from turntable import limit_error
@@ -125,7 +138,7 @@ LIMIT_FIT_TIMES = 1001
 
 
 class LimitErrorFit(NamedTuple):
-    """The largest position error of the no-slip limit and its power law in mu0.
+    r"""The largest position error of the no-slip limit and its power law in mu0.
 
     Attributes
     ----------
@@ -134,7 +147,7 @@ class LimitErrorFit(NamedTuple):
     error : numpy.ndarray
         `limit_error` on [0, t_end] at each mu0.
     order : float
-        p of the least-squares line ln error = ln c + p ln mu0.
+        p of the least-squares line :math:`\ln e = \ln c + p \ln \mu_0` (e the error).
     prefactor : float
         c of that line.
     """
@@ -146,7 +159,7 @@ class LimitErrorFit(NamedTuple):
 
 
 def limit_error_fit(z0: ArrayLike, t_end: float, mu0: ArrayLike, k: float) -> LimitErrorFit:
-    """Return the largest position error on [0, t_end] at each mu0 and its fitted order.
+    r"""Return the largest position error on [0, t_end] at each mu0 and its fitted order.
 
     Parameters
     ----------
@@ -165,10 +178,11 @@ def limit_error_fit(z0: ArrayLike, t_end: float, mu0: ArrayLike, k: float) -> Li
 
     Notes
     -----
-    e(mu0) = max over t in [0, t_end] of |r(t; mu0) - r_nh(t)| (`limit_error`, on
-    `LIMIT_FIT_TIMES` equally spaced times), and the least-squares fit
-    ln e = ln c + p ln mu0 over the given mu0.  Section 3: p -> -1 (positions converge
-    uniformly on a fixed interval at rate O(1/mu0)).  The one fit of the order that
+    :math:`e(\mu_0) = \max_{0 \le t \le t_{end}} |r(t; \mu_0) - r_{nh}(t)|` (`limit_error`,
+    on ``LIMIT_FIT_TIMES`` equally spaced times), and the least-squares fit
+    :math:`\ln e = \ln c + p \ln \mu_0` over the given :math:`\mu_0`.  Section 3:
+    :math:`p \to -1` (positions converge uniformly on a fixed interval at rate
+    :math:`O(1/\mu_0)`).  The one fit of the order that
     the claim ``limit.convergence`` reports for the paper's ball and Fig. 6(b) draws.
 
     Examples

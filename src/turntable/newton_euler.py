@@ -61,7 +61,7 @@ def newton_euler(
     rtol: float = 1e-12,
     atol: float = 1e-12,
 ) -> NewtonEulerResult:
-    """Integrate the full 3-D Newton-Euler equations of the ball.
+    r"""Integrate the full 3-D Newton-Euler equations of the ball.
 
     Parameters
     ----------
@@ -75,7 +75,7 @@ def newton_euler(
     wz0 : float, optional
         Initial spin about the vertical (free: it must not affect the motion).
     g : float, optional
-        Dimensionless gravity g / (R Omega^2) (free: it must not affect the
+        Dimensionless gravity :math:`g / (R \Omega^2)` (free: it must not affect the
         planar motion).
     method, rtol, atol : optional
         Passed to `scipy.integrate.solve_ivp`.
@@ -86,13 +86,16 @@ def newton_euler(
 
     Notes
     -----
-    Equations (1.3)-(1.4) in the units of (1.6)::
+    Equations (1.3)-(1.4) in the units of (1.6):
 
-        u = v + gamma x w - gamma x r
-        dr/dt = v,   dv/dt = -mu0 u + g_vec + N,   dw/dt = (mu0 / k) gamma x u
+    .. math::
 
-    with g_vec = -g gamma and N = N gamma the reaction that keeps the ball on
-    the plane: d^2 z / dt^2 = 0 gives N = g + mu0 u . gamma.
+        u = v + \gamma \times \omega - \gamma \times r, \quad
+        \dot r = v, \quad \dot v = -\mu_0 u + \mathbf{g} + \mathbf{N}, \quad
+        \dot\omega = \frac{\mu_0}{k}\, \gamma \times u,
+
+    with :math:`\mathbf{g} = -g\gamma` and :math:`\mathbf{N} = N\gamma` the reaction that
+    keeps the ball on the plane: :math:`\ddot z = 0` gives :math:`N = g + \mu_0\, u \cdot \gamma`.
 
     Examples
     --------

@@ -177,7 +177,7 @@ class RollingModes(NamedTuple):
 
 
 def modal_terms(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> RollingModes:
-    """Split the rolling motion into the growing spiral and its moving centre.
+    r"""Split the rolling motion into the growing spiral and its moving centre.
 
     Parameters
     ----------
@@ -191,13 +191,13 @@ def modal_terms(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> RollingM
     Returns
     -------
     RollingModes
-        ``spiral`` carries A_g e^{lambda_g t}, ``centre`` A_c e^{lambda_c t}
-        (with their v and w = r + i v); they sum to `solve`.
+        ``spiral`` carries :math:`A_g e^{\lambda_g t}`, ``centre`` :math:`A_c e^{\lambda_c t}`
+        (with their v and :math:`\omega = r + i v`); they sum to `solve`.
 
     Notes
     -----
-    A_g = (v0 - lambda_c r0) / (lambda_g - lambda_c),
-    A_c = (lambda_g r0 - v0) / (lambda_g - lambda_c) (module docstring).
+    :math:`A_g = (v_0 - \lambda_c r_0) / (\lambda_g - \lambda_c)`,
+    :math:`A_c = (\lambda_g r_0 - v_0) / (\lambda_g - \lambda_c)` (:doc:`/theory`).
 
     Examples
     --------
@@ -206,7 +206,8 @@ def modal_terms(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> RollingM
     >>> from turntable import rolling
     >>> z0, t = rolling.state_on_constraint([0, 0, 1, 0]), [0.0, 1.0, 10.0]
     >>> parts = rolling.modal_terms(z0, t, 0.1, 0.4)
-    >>> bool(abs(parts.spiral + parts.centre - rolling.solve(z0, t, 0.1, 0.4)).max() < 1e-14)
+    >>> z = rolling.solve(z0, t, 0.1, 0.4)
+    >>> bool(abs(parts.spiral + parts.centre - z).max() < 1e-14)
     True
     """
     t = _validate.times("t", t)
@@ -224,7 +225,7 @@ def modal_terms(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> RollingM
 
 
 def solve(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> NDArray[np.float64]:
-    """Return the exact rolling motion z(t) from z0.
+    r"""Return the exact rolling motion z(t) from z0.
 
     Parameters
     ----------
@@ -250,7 +251,8 @@ def solve(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> NDArray[np.flo
 
     Notes
     -----
-    r(t) = A_g e^{lambda_g t} + A_c e^{lambda_c t}, v = dr/dt, w = r + i v.
+    :math:`r(t) = A_g e^{\lambda_g t} + A_c e^{\lambda_c t}`, :math:`v = \dot r`,
+    :math:`\omega = r + i v` (:doc:`/theory`).
 
     Examples
     --------
@@ -268,12 +270,21 @@ def solve(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> NDArray[np.flo
 
 
 def spiral_centre(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> NDArray[np.float64]:
-    """Return the position of the spiral's centre, shape (len(t), 2).
+    r"""Return the position of the spiral's centre, shape (len(t), 2).
+
+    Parameters
+    ----------
+    z0 : array_like
+        Initial state on the no-slip constraint (x, y, vx, vy, wx, wy).
+    t : array_like
+        1-D array of times >= 0.
+    delta, k : float
+        Rolling-resistance coefficient and inertia ratio, finite and > 0.
 
     Notes
     -----
-    r_c(t) = A_c e^{lambda_c t}: it moves, spiralling into the turntable's
-    axis at the rate |sigma_c| (`centre_decay_rate`).
+    :math:`r_c(t) = A_c e^{\lambda_c t}`: it moves, spiralling into the turntable's
+    axis at the rate :math:`|\sigma_c|` (`centre_decay_rate`).
 
     Examples
     --------
@@ -330,13 +341,25 @@ def matched_delta(mu0: ArrayLike, k: ArrayLike, comparison: str) -> NDArray[np.f
 
 
 def growth_per_turn_ratio(mu0: ArrayLike, k: ArrayLike, comparison: str) -> NDArray[np.float64]:
-    """Return the slipping spiral's log growth per turn over the rolling one's.
+    r"""Return the slipping spiral's log growth per turn over the rolling one's.
+
+    Parameters
+    ----------
+    mu0, k : float or array_like
+        Slipping friction coefficient and inertia ratio, finite and > 0.
+    comparison : {"equal_coefficient", "equal_power", "equal_decay"}
+        How the rolling coefficient is matched to mu0 (`COMPARISONS`, `matched_delta`).
+
+    Returns
+    -------
+    numpy.ndarray
+        The ratio, of the broadcast shape of mu0 and k.
 
     Notes
     -----
-    (2 pi alpha1 / beta)(mu0) / (2 pi sigma_g / nu_g)(delta), delta =
-    `matched_delta` (mu0, k, comparison).  Limits for large mu0:
-    k^2 / (k + 1)^2 (a), 1 (b), k (c).
+    :math:`(2\pi \alpha_1 / \beta)(\mu_0) / (2\pi \sigma_g / \nu_g)(\delta)`,
+    :math:`\delta` = `matched_delta` (mu0, k, comparison).  Limits for large
+    :math:`\mu_0`: :math:`k^2 / (k + 1)^2` (a), 1 (b), k (c).
 
     Examples
     --------
@@ -344,7 +367,8 @@ def growth_per_turn_ratio(mu0: ArrayLike, k: ArrayLike, comparison: str) -> NDAr
 
     >>> from turntable import rolling
     >>> for comparison in rolling.COMPARISONS:
-    ...     print(comparison, rolling.growth_per_turn_ratio([0.1, 1.0], 0.4, comparison).round(3))
+    ...     ratio = rolling.growth_per_turn_ratio([0.1, 1.0], 0.4, comparison)
+    ...     print(comparison, ratio.round(3))
     equal_coefficient [1.342 0.211]
     equal_power [2.721 1.06 ]
     equal_decay [1.056 0.443]
@@ -382,7 +406,7 @@ def newton_euler(
     rtol: float = 1e-12,
     atol: float = 1e-13,
 ) -> RollingNewtonEuler:
-    """Integrate the constrained 3-D Newton-Euler equations of the rolling ball.
+    r"""Integrate the constrained 3-D Newton-Euler equations of the rolling ball.
 
     Parameters
     ----------
@@ -394,12 +418,12 @@ def newton_euler(
     delta, k : float
         Rolling-resistance coefficient and inertia ratio, > 0.
     torque : {"horizontal", "full", "relative"}
-        M = -delta w_h, M = -delta w, or M = -delta (w - gamma) (relative
-        to the plane).
+        :math:`M = -\delta \omega_h`, :math:`M = -\delta \omega`, or
+        :math:`M = -\delta (\omega - \gamma)` (relative to the plane).
     wz0 : float
         Initial vertical spin, finite.
     g : float
-        Dimensionless gravity g / (R Omega^2), finite and > 0 (the normal
+        Dimensionless gravity :math:`g / (R \Omega^2)`, finite and > 0 (the normal
         force is m g: the ball is pressed onto the plane).
     rtol, atol : float
         Tolerances of `scipy.integrate.solve_ivp` (DOP853), finite and > 0.

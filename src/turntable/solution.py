@@ -51,7 +51,7 @@ def _real_state(
 
 
 def conserved(z: ArrayLike, k: float) -> NDArray[np.float64]:
-    """Return the two conserved quantities (k wx - vy, k wy + vx).
+    r"""Return the two conserved quantities (k wx - vy, k wy + vx).
 
     Parameters
     ----------
@@ -68,7 +68,7 @@ def conserved(z: ArrayLike, k: float) -> NDArray[np.float64]:
     Notes
     -----
     Angular momentum about the contact point, Section 2: in complex form
-    c = v - i k w is constant along every solution of (1.7).
+    :math:`c = v - i k \omega` is constant along every solution of (1.7).
 
     Examples
     --------
@@ -84,7 +84,7 @@ def conserved(z: ArrayLike, k: float) -> NDArray[np.float64]:
 
 
 def spiral_centre(z0: ArrayLike, k: float) -> NDArray[np.float64]:
-    """Return the centre (x0, y0) of the spiral traced by the ball's centre.
+    r"""Return the centre (x0, y0) of the spiral traced by the ball's centre.
 
     Parameters
     ----------
@@ -100,13 +100,11 @@ def spiral_centre(z0: ArrayLike, k: float) -> NDArray[np.float64]:
 
     Notes
     -----
-    Equation (2.8), from the conserved quantities::
-
-        x0 = (k wx(0) - vy(0)) / k,   y0 = (k wy(0) + vx(0)) / k
-
-    It does not depend on r(0).  The sign in y0 is +: the centre is the
-    fixed point x0 e1 + y0 e2 with the same conserved c as z0, and at a
-    fixed point v = 0, w = (x0, y0), so c = -i k (x0 + i y0).
+    Equation (2.8), from the conserved quantities:
+    :math:`x_0 = (k \omega_x(0) - v_y(0)) / k`, :math:`y_0 = (k \omega_y(0) + v_x(0)) / k`.
+    It does not depend on r(0).  The sign in :math:`y_0` is +: the centre is the fixed point
+    :math:`x_0 e_1 + y_0 e_2` with the same conserved c as z0, and at a fixed point
+    :math:`v = 0`, :math:`\omega = (x_0, y_0)`, so :math:`c = -i k (x_0 + i y_0)`.
 
     Examples
     --------
@@ -142,7 +140,7 @@ def _coefficients(z0: ArrayLike, mu0: float, k: float) -> _Coefficients:
 
 
 def solve(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> NDArray[np.float64]:
-    """Return the exact solution z(t) of dz/dt = L z with z(0) = z0.
+    r"""Return the exact solution z(t) of dz/dt = L z with z(0) = z0.
 
     Parameters
     ----------
@@ -162,20 +160,20 @@ def solve(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> NDArray[np.float
     ------
     ValueError
         For a bad argument, or a time beyond `max_time` (mu0, k, z0), where
-        the growing part e^{alpha1 t} of the solution overflows a double; the
+        the growing part :math:`e^{\alpha_1 t}` of the solution overflows a double; the
         message names that largest time.
 
     Notes
     -----
-    Equation (2.7), z(t) = z0 + z+(t) + z-(t), evaluated in the
+    Equation (2.7), :math:`z(t) = z_0 + z_+(t) + z_-(t)`, evaluated in the
     cancellation-free form given in the module docstring.  The error is
-    about 1e-15 relative to the size of the state for mu0 in
-    [1e-3, 1e3] (see ``benchmarks/``).
+    about :math:`10^{-15}` relative to the size of the state for :math:`\mu_0` in
+    :math:`[10^{-3}, 10^3]` (see ``benchmarks/``).
 
     Examples
     --------
     Started at the origin with velocity (1, 0) and no spin, the ball's centre spirals out
-    about (0, 2.5), its distance growing like e^(alpha1 t), alpha1 = 0.0226:
+    about (0, 2.5), its distance growing like :math:`e^{\alpha_1 t}`, :math:`\alpha_1 = 0.0226`:
 
     >>> import numpy as np
     >>> from turntable import solve, spiral_centre
@@ -251,22 +249,22 @@ def _limit_reason(c: _Coefficients) -> str:
 
 
 def max_time(mu0: ArrayLike, k: ArrayLike, z0: ArrayLike | None = None) -> NDArray[np.float64]:
-    """Return the largest time t at which the solution is representable in doubles.
+    r"""Return the largest time t at which the solution is representable in doubles.
 
     Parameters
     ----------
     mu0, k : float or array_like
         Friction coefficient and inertia ratio, finite and > 0; broadcast
-        against each other.  Single numbers if `z0` is given.
+        against each other.  Single numbers if ``z0`` is given.
     z0 : array_like, optional
         Initial state (x, y, vx, vy, wx, wy).  Without it, the bound is
-        where the growth factor e^{alpha1 t} itself overflows.
+        where the growth factor :math:`e^{\alpha_1 t}` itself overflows.
 
     Returns
     -------
     numpy.ndarray
-        ``ln(DBL_MAX) / alpha1`` (about 709.78 / alpha1), of the broadcast
-        shape; with `z0`, the (slightly smaller) largest t that both `solve`
+        :math:`\ln(\mathrm{DBL\_MAX}) / \alpha_1 \approx 709.78 / \alpha_1`, of the broadcast
+        shape; with ``z0``, the (slightly smaller) largest t that both `solve`
         and `modal_terms` accept for that initial state, as a 0-d array.
         Each of them raises ValueError for later times (`modal_terms`, whose
         terms are bounded one by one, up to 2 % earlier than `solve`).
@@ -274,8 +272,8 @@ def max_time(mu0: ArrayLike, k: ArrayLike, z0: ArrayLike | None = None) -> NDArr
     Notes
     -----
     Equation (2.7): the growing part of the solution is proportional to
-    e^{alpha1 t}, alpha1 of (2.5)-(2.6), and a double holds at most
-    DBL_MAX = 1.8e308 = e^{709.78}.
+    :math:`e^{\alpha_1 t}`, :math:`\alpha_1` of (2.5)-(2.6), and a double holds at most
+    :math:`\mathrm{DBL\_MAX} = 1.8 \times 10^{308} = e^{709.78}`.
 
     Examples
     --------
@@ -334,7 +332,7 @@ class ModalTerms(NamedTuple):
 
 
 def modal_terms(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> ModalTerms:
-    """Split the solution into its fixed, growing and decaying parts.
+    r"""Split the solution into its fixed, growing and decaying parts.
 
     Parameters
     ----------
@@ -349,19 +347,18 @@ def modal_terms(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> ModalTerms
     -------
     ModalTerms
         ``(centre, plus, minus)``: the projection of z0 on ker L (constant),
-        the part on the modes alpha1 +- i beta and the part on the modes
-        alpha2 +- i beta.  They sum to `solve` (up to rounding relative to
-        the size of the terms, which grow like mu0^-1/2 as mu0 -> 0).
+        the part on the modes :math:`\alpha_1 \pm i\beta` and the part on the modes
+        :math:`\alpha_2 \pm i\beta`.  They sum to `solve` (up to rounding relative to
+        the size of the terms, which grow like :math:`\mu_0^{-1/2}` as :math:`\mu_0 \to 0`).
 
     Notes
     -----
-    Equation (2.7).  With rho0 = r(0) - r_c and v0 = v(0)::
-
-        rho(t) = A e^{lambda_+ t} + B e^{lambda_- t},
-        A = (v0 - lambda_- rho0) / (lambda_+ - lambda_-),
-        B = (lambda_+ rho0 - v0) / (lambda_+ - lambda_-),
-
-    and each mode carries v = lambda rho, w = -i lambda rho / k.
+    Equation (2.7).  With :math:`\rho_0 = r(0) - r_c`, :math:`v_0 = v(0)` and
+    :math:`\lambda_\pm = \alpha_1 + i\beta, \alpha_2 - i\beta`,
+    :math:`\rho(t) = A e^{\lambda_+ t} + B e^{\lambda_- t}`,
+    :math:`A = (v_0 - \lambda_- \rho_0) / (\lambda_+ - \lambda_-)`,
+    :math:`B = (\lambda_+ \rho_0 - v_0) / (\lambda_+ - \lambda_-)`,
+    and each mode carries :math:`v = \lambda\rho`, :math:`\omega = -i \lambda\rho / k`.
 
     Examples
     --------
@@ -370,7 +367,8 @@ def modal_terms(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> ModalTerms
     >>> from turntable import modal_terms, solve
     >>> z0, t = [0, 0, 1, 0, 0, 0], [0.0, 1.0, 10.0]
     >>> parts = modal_terms(z0, t, 1.0, 0.4)
-    >>> bool(abs(parts.centre + parts.plus + parts.minus - solve(z0, t, 1.0, 0.4)).max() < 1e-14)
+    >>> z = solve(z0, t, 1.0, 0.4)
+    >>> bool(abs(parts.centre + parts.plus + parts.minus - z).max() < 1e-14)
     True
     """
     t = _validate.times("t", t)
@@ -388,7 +386,7 @@ def modal_terms(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> ModalTerms
 
 
 def no_slip_state(z0: ArrayLike, k: float) -> NDArray[np.float64]:
-    """Return the state on the no-slip constraint reached after the initial layer.
+    r"""Return the state on the no-slip constraint reached after the initial layer.
 
     Parameters
     ----------
@@ -403,12 +401,12 @@ def no_slip_state(z0: ArrayLike, k: float) -> NDArray[np.float64]:
     numpy.ndarray
         The state(s), of the shape of z0, with the same r and the same
         conserved quantities as z0 whose slip velocity
-        u = v + gamma x w - gamma x r vanishes.
+        :math:`u = v + \gamma \times \omega - \gamma \times r` vanishes.
 
     Notes
     -----
-    Section 3: in complex form u = v + i (w - r) = 0 and c = v - i k w fix
-    v = i k (r - r_c) / (k + 1) and w = r + i v.
+    Section 3: in complex form :math:`u = v + i (\omega - r) = 0` and
+    :math:`c = v - i k \omega` fix :math:`v = i k (r - r_c) / (k + 1)` and :math:`\omega = r + i v`.
 
     Examples
     --------
@@ -430,7 +428,7 @@ def no_slip_state(z0: ArrayLike, k: float) -> NDArray[np.float64]:
 
 
 def slip_velocity(z: ArrayLike) -> NDArray[np.float64]:
-    """Return the slip velocity u = v + gamma x w - gamma x r, components (ux, uy).
+    r"""Return the slip velocity u = v + gamma x w - gamma x r, components (ux, uy).
 
     Parameters
     ----------
@@ -455,7 +453,7 @@ def slip_velocity(z: ArrayLike) -> NDArray[np.float64]:
 
 
 def nonholonomic(z0: ArrayLike, t: ArrayLike, k: float) -> NDArray[np.float64]:
-    """Return the no-slip (mu0 -> infinity) motion started from z0.
+    r"""Return the no-slip (mu0 -> infinity) motion started from z0.
 
     Parameters
     ----------
@@ -475,11 +473,10 @@ def nonholonomic(z0: ArrayLike, t: ArrayLike, k: float) -> NDArray[np.float64]:
 
     Notes
     -----
-    Equation (3.3): the centre circles about (x0, y0) of (2.8) at the
-    constant rate k / (k + 1) with constant radius::
-
-        r(t) = r_c + (r(0) - r_c) e^{i k t / (k + 1)},
-        v = i k (r - r_c) / (k + 1),   w = r_c + (r - r_c) / (k + 1).
+    Equation (3.3): the centre circles about :math:`(x_0, y_0)` of (2.8) at the
+    constant rate :math:`k / (k + 1)` with constant radius,
+    :math:`r(t) = r_c + (r(0) - r_c)\, e^{i k t / (k + 1)}`,
+    :math:`v = i k (r - r_c) / (k + 1)`, :math:`\omega = r_c + (r - r_c) / (k + 1)`.
 
     Examples
     --------

@@ -32,14 +32,14 @@ _J = np.array([[0.0, -1.0], [1.0, 0.0]])
 
 
 def system_matrix(mu0: float, k: float) -> NDArray[np.float64]:
-    """Return the 6x6 matrix L of the linear system dz/dt = L z.
+    r"""Return the 6x6 matrix L of the linear system dz/dt = L z.
 
     Parameters
     ----------
     mu0 : float
-        Dimensionless viscous friction coefficient, mu0 / (m Omega) > 0.
+        Dimensionless viscous friction coefficient, :math:`\mu_0 / (m \Omega) > 0`.
     k : float
-        Inertia ratio I / (m R^2) > 0 (2/5 for a homogeneous ball).
+        Inertia ratio :math:`I / (m R^2) > 0` (2/5 for a homogeneous ball).
 
     Returns
     -------
@@ -48,13 +48,15 @@ def system_matrix(mu0: float, k: float) -> NDArray[np.float64]:
 
     Notes
     -----
-    Equation (1.7) of the paper::
+    Equation (1.7) of the paper:
 
-        L = [[ 0,         I,         0        ],
-             [ mu0 J,    -mu0 I,    -mu0 J    ],
-             [ mu0/k I,   mu0/k J,  -mu0/k I  ]]
+    .. math::
 
-    with I the 2x2 identity and J = [[0, -1], [1, 0]].
+        L = \begin{pmatrix} 0 & I_2 & 0 \\ \mu_0 J & -\mu_0 I_2 & -\mu_0 J \\
+            \tfrac{\mu_0}{k} I_2 & \tfrac{\mu_0}{k} J & -\tfrac{\mu_0}{k} I_2 \end{pmatrix},
+        \qquad J = \begin{pmatrix} 0 & -1 \\ 1 & 0 \end{pmatrix},
+
+    with :math:`I_2` the 2x2 identity.
 
     Examples
     --------
@@ -79,24 +81,24 @@ def system_matrix(mu0: float, k: float) -> NDArray[np.float64]:
 
 
 class Spectrum(NamedTuple):
-    """Real and imaginary parts of the nonzero eigenvalues of L.
+    r"""Real and imaginary parts of the nonzero eigenvalues of L.
 
     Attributes
     ----------
     alpha1 : numpy.ndarray
-        Growth rate of the modes lambda_{1,2} = alpha1 +- i beta (> 0).
+        Growth rate of the modes :math:`\lambda_{1,2} = \alpha_1 \pm i\beta` (> 0).
     alpha2 : numpy.ndarray
-        Decay rate of the modes lambda_{3,4} = alpha2 +- i beta (< 0).
+        Decay rate of the modes :math:`\lambda_{3,4} = \alpha_2 \pm i\beta` (< 0).
     beta : numpy.ndarray
         Common angular frequency of all four modes.
     mu : numpy.ndarray
-        mu = mu0 (k + 1) / (2 k) of (2.2).
+        :math:`\mu = \mu_0 (k + 1) / (2 k)` of (2.2).
     eps : numpy.ndarray
-        eps = 4 k^2 / (mu0 (k + 1)^2) of (2.2).
+        :math:`\varepsilon = 4 k^2 / (\mu_0 (k + 1)^2)` of (2.2).
     a : numpy.ndarray
-        a = sqrt((sqrt(1 + eps^2) + 1) / 2) of (2.5).
+        :math:`a = \sqrt{(\sqrt{1 + \varepsilon^2} + 1) / 2}` of (2.5).
     b : numpy.ndarray
-        b = sqrt((sqrt(1 + eps^2) - 1) / 2) of (2.5).
+        :math:`b = \sqrt{(\sqrt{1 + \varepsilon^2} - 1) / 2}` of (2.5).
     """
 
     alpha1: NDArray[np.float64]
@@ -123,7 +125,7 @@ def _spectrum(mu0: NDArray[np.float64], k: NDArray[np.float64]) -> Spectrum:
 
 
 def spectrum(mu0: ArrayLike, k: ArrayLike) -> Spectrum:
-    """Return alpha1, alpha2, beta and the auxiliary mu, eps, a, b.
+    r"""Return alpha1, alpha2, beta and the auxiliary mu, eps, a, b.
 
     Parameters
     ----------
@@ -138,10 +140,13 @@ def spectrum(mu0: ArrayLike, k: ArrayLike) -> Spectrum:
 
     Notes
     -----
-    Equations (2.2) and (2.5)::
+    Equations (2.2) and (2.5):
 
-        mu = mu0 (k + 1) / (2 k),   eps = 4 k^2 / (mu0 (k + 1)^2)
-        alpha1 = mu (a - 1),  alpha2 = -mu (a + 1),  beta = mu b
+    .. math::
+
+        \mu = \frac{\mu_0 (k + 1)}{2 k}, \quad
+        \varepsilon = \frac{4 k^2}{\mu_0 (k + 1)^2}, \quad
+        \alpha_1 = \mu (a - 1), \quad \alpha_2 = -\mu (a + 1), \quad \beta = \mu b,
 
     evaluated in the cancellation-free form given in the module docstring.
 
@@ -159,7 +164,7 @@ def spectrum(mu0: ArrayLike, k: ArrayLike) -> Spectrum:
 
 
 def eigenvalues(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.complex128]:
-    """Return the four nonzero eigenvalues of L.
+    r"""Return the four nonzero eigenvalues of L.
 
     Parameters
     ----------
@@ -171,13 +176,13 @@ def eigenvalues(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.complex128]:
     -------
     numpy.ndarray
         Complex array of shape ``broadcast(mu0, k).shape + (4,)`` whose last
-        axis is (alpha1 + i beta, alpha1 - i beta, alpha2 + i beta,
-        alpha2 - i beta).
+        axis is :math:`(\alpha_1 + i\beta, \alpha_1 - i\beta, \alpha_2 + i\beta,
+        \alpha_2 - i\beta)`.
 
     Notes
     -----
-    Equation (2.4): lambda_{1,2} = mu (-1 + sqrt(1 +- i eps)) and
-    lambda_{3,4} = mu (-1 - sqrt(1 +- i eps)); each real and imaginary part
+    Equation (2.4): :math:`\lambda_{1,2} = \mu (-1 + \sqrt{1 \pm i\varepsilon})` and
+    :math:`\lambda_{3,4} = \mu (-1 - \sqrt{1 \pm i\varepsilon})`; each real and imaginary part
     has a relative error of a few units in the last place for all
     mu0, k > 0 (see ``benchmarks/``).
 
@@ -202,7 +207,7 @@ def eigenvalues(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.complex128]:
 
 
 def log_damping_ratio(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
-    """Return ln N, the logarithm of the decay of z- over one period.
+    r"""Return ln N, the logarithm of the decay of z- over one period.
 
     Parameters
     ----------
@@ -212,14 +217,15 @@ def log_damping_ratio(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
     Returns
     -------
     numpy.ndarray
-        ln N = 2 pi |alpha2| / beta, of the broadcast shape.
+        :math:`\ln N = 2\pi |\alpha_2| / \beta`, of the broadcast shape.
 
     Notes
     -----
-    Equations (2.9)-(2.10): over one period T = 2 pi / beta the decaying
-    term falls by N = exp(|alpha2| T).  Since |alpha2| / beta = (a + 1) / b
-    = sqrt((a + 1) / (a - 1)) > 1, ln N > 2 pi for all mu0 and k, tending
-    to 2 pi as mu0 -> 0.  N itself overflows a double near mu0 = 5, so only
+    Equations (2.9)-(2.10): over one period :math:`T = 2\pi / \beta` the decaying
+    term falls by :math:`N = e^{|\alpha_2| T}`.  Since
+    :math:`|\alpha_2| / \beta = (a + 1) / b = \sqrt{(a + 1) / (a - 1)} > 1`,
+    :math:`\ln N > 2\pi` for all :math:`\mu_0` and k, tending to :math:`2\pi` as
+    :math:`\mu_0 \to 0`.  N itself overflows a double near :math:`\mu_0 = 5`, so only
     its logarithm is returned.
 
     Examples
@@ -238,12 +244,23 @@ def log_damping_ratio(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
 
 
 def log_growth_per_turn(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
-    """Return 2 pi alpha1 / beta, the log growth of the spiral per turn.
+    r"""Return 2 pi alpha1 / beta, the log growth of the spiral per turn.
+
+    Parameters
+    ----------
+    mu0, k : float or array_like
+        Friction coefficient and inertia ratio, finite and > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        :math:`2\pi\alpha_1 / \beta`, of the broadcast shape.
 
     Notes
     -----
-    alpha1 / beta = (a - 1) / b = sqrt((a - 1) / (a + 1)) = beta / |alpha2|,
-    which decreases monotonically from 1 (mu0 -> 0) to 0 (mu0 -> infinity).
+    :math:`\alpha_1 / \beta = (a - 1) / b = \sqrt{(a - 1) / (a + 1)} = \beta / |\alpha_2|`,
+    which decreases monotonically from 1 (:math:`\mu_0 \to 0`) to 0
+    (:math:`\mu_0 \to \infty`).
 
     Examples
     --------
@@ -266,7 +283,7 @@ class Peak(NamedTuple):
 
 
 def alpha1_peak(k: ArrayLike) -> Peak:
-    """Return the friction mu0 at which alpha1 is largest, and alpha1 there.
+    r"""Return the friction mu0 at which alpha1 is largest, and alpha1 there.
 
     Parameters
     ----------
@@ -276,15 +293,16 @@ def alpha1_peak(k: ArrayLike) -> Peak:
     Returns
     -------
     Peak
-        ``mu0 = 2 k^2 / ((k + 1)^2 phi^(3/2))`` and
-        ``alpha1 = k / (k + 1) phi^(-5/2)``, with phi the golden ratio, and
-        the universal ``eps = 2 phi^(3/2)`` at the peak.
+        :math:`\mu_0 = 2 k^2 / ((k + 1)^2 \varphi^{3/2})` and
+        :math:`\alpha_1 = k / (k + 1)\, \varphi^{-5/2}`, with :math:`\varphi` the golden
+        ratio, and the universal :math:`\varepsilon = 2 \varphi^{3/2}` at the peak.
 
     Notes
     -----
-    In terms of a of (2.5), alpha1 = (k / (k + 1)) sqrt((a - 1)/(a + 1)) / a,
-    whose logarithmic derivative vanishes where a^2 - a - 1 = 0, i.e.
-    a = phi.  For k = 2/5 the peak is at mu0 = 0.0793.
+    In terms of a of (2.5),
+    :math:`\alpha_1 = \frac{k}{k + 1} \sqrt{(a - 1)/(a + 1)} / a`,
+    whose logarithmic derivative vanishes where :math:`a^2 - a - 1 = 0`, i.e.
+    :math:`a = \varphi`.  For k = 2/5 the peak is at :math:`\mu_0 = 0.0793`.
 
     Examples
     --------
@@ -311,7 +329,7 @@ class Expansion(NamedTuple):
 
 
 def large_friction_expansion(mu0: ArrayLike, k: ArrayLike) -> Expansion:
-    """Return the leading terms of (3.2) for the real and imaginary parts.
+    r"""Return the leading terms of (3.2) for the real and imaginary parts.
 
     Parameters
     ----------
@@ -321,24 +339,28 @@ def large_friction_expansion(mu0: ArrayLike, k: ArrayLike) -> Expansion:
     Returns
     -------
     Expansion
-        ``alpha1 = k^3 / (mu0 (k+1)^3)``,
-        ``alpha2 = -mu0 (k+1) / k - k^3 / (mu0 (k+1)^3)``,
-        ``beta = k / (k+1)``.
+        :math:`\alpha_1 = k^3 / (\mu_0 (k+1)^3)`,
+        :math:`\alpha_2 = -\mu_0 (k+1) / k - k^3 / (\mu_0 (k+1)^3)`,
+        :math:`\beta = k / (k+1)`.
 
     Notes
     -----
-    Equation (3.2)::
+    Equation (3.2):
 
-        lambda_{1,2} = +- i k/(k+1) + k^3 / (mu0 (k+1)^3) + O(mu0^-2)
-        lambda_{3,4} = -mu0 (k+1)/k -+ i k/(k+1) - k^3 / (mu0 (k+1)^3) + O(mu0^-2)
+    .. math::
 
-    The remainders are O(mu0^-2) for beta (-2 k^5 / (mu0^2 (k+1)^5)) and
-    O(mu0^-3) for alpha1 and alpha2.
+        \lambda_{1,2} &= \pm i \frac{k}{k+1} + \frac{k^3}{\mu_0 (k+1)^3} + O(\mu_0^{-2}),\\
+        \lambda_{3,4} &= -\mu_0 \frac{k+1}{k} \mp i \frac{k}{k+1}
+            - \frac{k^3}{\mu_0 (k+1)^3} + O(\mu_0^{-2}).
+
+    The remainders are :math:`O(\mu_0^{-2})` for :math:`\beta`
+    (:math:`-2 k^5 / (\mu_0^2 (k+1)^5)`) and :math:`O(\mu_0^{-3})` for :math:`\alpha_1`
+    and :math:`\alpha_2`.
 
     Examples
     --------
-    Against the exact roots at mu0 = 100: alpha1 ~ k^2 / (mu0 (k + 1)^3),
-    beta ~ k / (k + 1):
+    Against the exact roots at :math:`\mu_0 = 100` (:math:`\alpha_1` close to
+    :math:`k^3 / (\mu_0 (k + 1)^3)`, :math:`\beta` to :math:`k / (k + 1)`):
 
     >>> from turntable import large_friction_expansion, spectrum
     >>> approx, exact = large_friction_expansion(100.0, 0.4), spectrum(100.0, 0.4)

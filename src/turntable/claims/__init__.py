@@ -27,7 +27,7 @@ states never makes a claim ``refined`` when the statement holds as stated.
 
 The registry is the one source of the claims, of their order (the order of
 registration, with the check modules imported in the paper's order, see
-`CHECK_MODULES`) and of the verdict each is expected to reach (``expected=`` of
+``CHECK_MODULES``) and of the verdict each is expected to reach (``expected=`` of
 `register`); ``results/claims.json``, ``results/claims.md`` and the tests of
 ``tests/test_claims.py`` are generated from it.
 
@@ -97,6 +97,16 @@ def claim_ids() -> list[str]:
 
 def get(claim_id: str) -> Claim:
     """Return the registered `Claim` with identifier ``claim_id``.
+
+    Parameters
+    ----------
+    claim_id : str
+        Identifier of the claim, one of `ORDER`.
+
+    Returns
+    -------
+    Claim
+        The claim.
 
     Raises
     ------
@@ -187,6 +197,17 @@ def evaluate(claim_id: str, params: Mapping[str, Any] | None = None) -> dict[str
 
 def evaluate_all(params: Mapping[str, Any] | None = None) -> list[dict[str, Any]]:
     """Run every check, in the order of the paper; see `evaluate`.
+
+    Parameters
+    ----------
+    params : mapping, optional
+        Parameters of the checks over `DEFAULT_PARAMS` (section ``claims`` of the
+        configuration).
+
+    Returns
+    -------
+    list of dict
+        One record per claim, in the order of `ORDER` (see `evaluate`).
 
     Examples
     --------

@@ -63,7 +63,7 @@ def resolve_params(params: Mapping[str, Any] | None = None) -> dict[str, Any]:
     """Return the check parameters: ``params`` over `DEFAULT_PARAMS`, validated.
 
     The defaults and the rules (types, bounds, lengths) are those of the JSON schema
-    ``params.schema.yaml`` of this package (see `params_schema`), the same the workflow
+    ``params.schema.yaml`` of this package (see ``params_schema``), the same the workflow
     validates the ``claims:`` section of the workflow's configuration against; an integer must
     be an ``int`` (not ``400.0``). The one rule a schema cannot express is added here:
     ``mu0_range`` is increasing. (That ``state_si`` is not all zero is the schema's.)
@@ -201,7 +201,7 @@ class Outcome:
     tolerance : dict
         The bounds against which the verdict was decided, under the key of the
         reproduced value each bounds: a number (the value is at most that) or
-        ``{relation: limit}`` (see `within`). Every key is a key of ``reproduced``.
+        ``{relation: limit}`` (see ``within``). Every key is a key of ``reproduced``.
         Unless the verdict is ``failed`` every bound holds: what makes a verdict
         ``refined``, ``corrected`` or ``undecidable`` is stated as a bound that holds.
     summary : str
@@ -299,11 +299,27 @@ def register(
 
     The order of registration is the order of the report (the paper's order): the
     check modules are imported in the paper's order and register their claims in it.
-    ``expected`` is the verdict the tests require of the check; ``decisive`` the key of the
-    reproduced value whose bound decides that verdict (`turntable.claims.evaluate` refuses
-    a check whose tolerance does not bound it); ``gist`` what it establishes then, in a few
-    words (see `Claim`). Everything the report, the tests and
-    the article say of a claim comes from here: adding a claim is one call.
+    Everything the report, the tests and the article say of a claim comes from here:
+    adding a claim is one call.
+
+    Parameters
+    ----------
+    id : str
+        Stable identifier, ``"<part>.<name>"``.
+    where, claim, paper_value, method, source
+        The attributes of the same names of `Claim`.
+    expected : str
+        The verdict the tests require of the check (one of `VERDICTS`).
+    decisive : str
+        The key of the reproduced value whose bound decides that verdict
+        (`turntable.claims.evaluate` refuses a check whose tolerance does not bound it).
+    gist : str, optional
+        What the check establishes then, in a few words.
+
+    Returns
+    -------
+    callable
+        The decorator, which registers ``check(params) -> Outcome`` and returns it.
 
     Examples
     --------
@@ -364,6 +380,18 @@ def decide(as_stated: bool, otherwise: Verdict = "failed") -> Verdict:
     statement's readings), ``corrected`` when a corrected formula holds, ``undecidable``
     when the truth depends on values the paper does not give, ``failed`` when the numbers
     contradict it.
+
+    Parameters
+    ----------
+    as_stated : bool
+        Whether the paper's statement holds as stated.
+    otherwise : str, optional
+        The verdict when it does not: one of `VERDICTS` other than ``confirmed``.
+
+    Returns
+    -------
+    str
+        The verdict.
 
     Examples
     --------

@@ -1,35 +1,37 @@
-"""From a filmed ball to its friction: fit both friction models, and design the experiment.
+r"""From a filmed ball to its friction: fit both friction models, and design the experiment.
 
 Two mechanisms can make a ball's centre spiral outwards on a turntable:
 
 ``slipping``
-    the paper's model, viscous friction F = -mu0 u at the contact point
-    (`turntable.solve`, coefficient mu0 = mu0_dim / (m Omega));
+    the paper's model, viscous friction :math:`F = -\mu_0 u` at the contact point
+    (`turntable.solve`, coefficient :math:`\mu_0 = \mu_{0,\text{dim}} / (m \Omega)`);
 ``rolling_resistance``
-    rolling without slipping against a resistance torque -delta w
-    (`turntable.rolling.solve`, coefficient delta = delta_dim / (m R^2 Omega)).
+    rolling without slipping against a resistance torque :math:`-\delta \omega`
+    (`turntable.rolling.solve`, coefficient :math:`\delta = \delta_\text{dim} / (m R^2 \Omega)`).
 
 `fit_model` fits one of them to a `turntable.film.Film` (tracked positions in the lab frame,
 SI units) by nonlinear least squares (`scipy.optimize.least_squares`) on the exact
-closed-form solution, in the paper's units: tau = Omega (t - t0), r = (position - axis) / R.
+closed-form solution, in the paper's units: :math:`\tau = \Omega (t - t_0)`,
+:math:`r = (\text{position} - \text{axis}) / R`.
 The parameters are the state at the first frame t0 and the logarithm of the coefficient
 (which keeps it positive): 6 + 1 for slipping, and 4 + 1 for rolling, whose state is
 parametrised on the no-slip constraint by (x, y, vx, vy) (`turntable.rolling.state_on_constraint`).
-Optionally also s = ln(Omega / Omega_given) (``fit_omega``: the turntable's rate is not
-known exactly) and, for the rolling model, the position a of the axis (``fit_axis``); the
-slipping motion does not depend on the axis at all (a shift of the position with the same
-shift of the spin is again a solution, the plane of equilibria (2.3)), so there the axis
-is neither needed nor identifiable.  With Omega free, tau = Omega_given e^s (t - t0) and
-d r / d s = tau v(tau): both models' rates scale with Omega, and the ratio of growth to
-turning (alpha1 / beta, or Re / Im of lambda_g) fixes the coefficient alone, so Omega is
-identifiable from a film of a turn or more.
+Optionally also :math:`s = \ln(\Omega / \Omega_\text{given})` (``fit_omega``: the turntable's
+rate is not known exactly) and, for the rolling model, the position a of the axis
+(``fit_axis``); the slipping motion does not depend on the axis at all (a shift of the
+position with the same shift of the spin is again a solution, the plane of equilibria
+(2.3)), so there the axis is neither needed nor identifiable.  With :math:`\Omega` free,
+:math:`\tau = \Omega_\text{given} e^s (t - t_0)` and :math:`dr / ds = \tau v(\tau)`: both
+models' rates scale with :math:`\Omega`, and the ratio of growth to turning
+(:math:`\alpha_1 / \beta`, or :math:`\operatorname{Re} \lambda_g / \operatorname{Im} \lambda_g`)
+fixes the coefficient alone, so :math:`\Omega` is identifiable from a film of a turn or more.
 
-The modules, one concern each: `models` (the models' positions and parameter counts,
-shared with `simulate`, the synthetic films), `parameters` (the parameter vector and the
-Jacobian), `start` (start values), `results` (what a fit returns; AICc and whiteness),
-`lsq` (the fits), `diagnose` (consistency of Omega and the axis, problems), `io` (the JSON
-of ``turntable fit`` and reading it back), `design` (predicted errors, distinguishability,
-measurability) and `plot` (drawing a fit; matplotlib is imported there only).  Their public
+The modules, one concern each: ``models`` (the models' positions and parameter counts,
+shared with ``simulate``, the synthetic films), ``parameters`` (the parameter vector and the
+Jacobian), ``start`` (start values), ``results`` (what a fit returns; AICc and whiteness),
+``lsq`` (the fits), ``diagnose`` (consistency of Omega and the axis, problems), `io` (the JSON
+of ``turntable fit`` and reading it back), ``design`` (predicted errors, distinguishability,
+measurability) and ``plot`` (drawing a fit; matplotlib is imported there only).  Their public
 names are importable from `turntable.fit`.
 """
 

@@ -62,7 +62,7 @@ def predicted_stderr(
     fit_omega: bool = False,
     fit_axis: bool = False,
 ) -> float:
-    """Return the standard error of the coefficient that a film can reach (Cramer-Rao).
+    r"""Return the standard error of the coefficient that a film can reach (Cramer-Rao).
 
     Parameters
     ----------
@@ -91,12 +91,13 @@ def predicted_stderr(
 
     Notes
     -----
-    Fisher information F = J^T J / sigma^2 over the frames, J the derivatives of the
-    positions (m) with respect to all parameters at the truth; the others are nuisances,
-    so var(ln c) = [F^-1]_cc = sigma^2 / |(I - P) j_c|^2 (module docstring), and
-    se(c) = c sqrt(var(ln c)).  It is what `fit_model` reports, on average, for films of
-    this camera, as long as the fit is locally linear: for a predicted relative error
-    above about 0.2 the estimates scatter more than this (Fig. 8).
+    Fisher information :math:`F = J^T J / \sigma^2` over the frames, J the derivatives of
+    the positions (m) with respect to all parameters at the truth; the others are
+    nuisances, so :math:`\operatorname{var}(\ln c) = [F^{-1}]_{cc} = \sigma^2 / |(I - P) j_c|^2`
+    (P the projection on the other columns of J), and
+    :math:`\operatorname{se}(c) = c \sqrt{\operatorname{var}(\ln c)}`.  It is what `fit_model`
+    reports, on average, for films of this camera, as long as the fit is locally linear: for
+    a predicted relative error above about 0.2 the estimates scatter more than this (Fig. 8).
 
     Examples
     --------
@@ -114,7 +115,7 @@ def predicted_stderr(
 
 
 class Distinguishability(NamedTuple):
-    """How well a film tells a slipping ball from one rolling without slipping.
+    r"""How well a film tells a slipping ball from one rolling without slipping.
 
     Attributes
     ----------
@@ -123,10 +124,11 @@ class Distinguishability(NamedTuple):
     rms_distance : float
         rms distance per coordinate between the two, m.
     noncentrality : float
-        lambda = (sum of squared distances over the frames) / noise^2.
+        :math:`\lambda` = (sum of squared distances over the frames) / noise².
     expected_aicc_difference : float
-        Expected AICc(rolling) - AICc(slipping), about lambda - (p_slipping - p_rolling)
-        for lambda much smaller than the number of coordinates.
+        Expected AICc(rolling) - AICc(slipping), about
+        :math:`\lambda - (p_\text{slipping} - p_\text{rolling})` for :math:`\lambda` much
+        smaller than the number of coordinates.
     selection_probability : float
         Probability that AICc selects the slipping model.
     """
@@ -141,7 +143,7 @@ class Distinguishability(NamedTuple):
 def distinguishability(
     mu0: float, state0: ArrayLike, setup: Setup, camera: Camera
 ) -> Distinguishability:
-    """Return how well a film of a slipping ball rules out rolling without slipping.
+    r"""Return how well a film of a slipping ball rules out rolling without slipping.
 
     Parameters
     ----------
@@ -166,18 +168,26 @@ def distinguishability(
     Notes
     -----
     The noiseless film of the slipping ball is fitted with the rolling model
-    (`fit_model`); lambda = RSS_min / sigma^2.  With noise, and both models linearised
-    about their fits, RSS_s = sigma^2 chi^2_{N - p_s} and RSS_r = RSS_s + sigma^2 X with X
-    independent of RSS_s, a noncentral chi-square with q = p_s - p_r = 2 degrees of
-    freedom and noncentrality lambda (the rolling fit also absorbs part of the noise).
-    Then AICc_r - AICc_s = N ln(1 + X sigma^2 / RSS_s) - D with
-    D = 2 q + 2 K_s (K_s + 1) / (N - K_s - 1) - 2 K_r (K_r + 1) / (N - K_r - 1)
-    (K = p + 1), whose mean is about N ln((N - p_r + lambda) / (N - p_s)) - D
-    (= lambda - q for lambda << N and many frames), and the slipping model is selected when
-    (X / q) / (RSS_s / (N - p_s)), a noncentral F variable, exceeds
-    (e^{D / N} - 1)(N - p_s) / q: probability about P(chi'^2_q(lambda) > 2 q) for many
-    frames (e^-2 = 0.14 at lambda = 0, when the two motions coincide).  Valid while the
-    fits are locally linear.
+    (`fit_model`); :math:`\lambda = \mathrm{RSS}_\text{min} / \sigma^2`.  With noise, and
+    both models linearised about their fits, :math:`\mathrm{RSS}_s = \sigma^2 \chi^2_{N - p_s}`
+    and :math:`\mathrm{RSS}_r = \mathrm{RSS}_s + \sigma^2 X` with X independent of
+    :math:`\mathrm{RSS}_s`, a noncentral chi-square with :math:`q = p_s - p_r = 2` degrees
+    of freedom and noncentrality :math:`\lambda` (the rolling fit also absorbs part of the
+    noise). Then
+
+    .. math::
+
+        \mathrm{AICc}_r - \mathrm{AICc}_s = N \ln(1 + X \sigma^2 / \mathrm{RSS}_s) - D,
+        \quad D = 2 q + \frac{2 K_s (K_s + 1)}{N - K_s - 1} - \frac{2 K_r (K_r + 1)}{N - K_r - 1}
+
+    (:math:`K = p + 1`), whose mean is about
+    :math:`N \ln((N - p_r + \lambda) / (N - p_s)) - D` (:math:`= \lambda - q` for
+    :math:`\lambda \ll N` and many frames), and the slipping model is selected when
+    :math:`(X / q) / (\mathrm{RSS}_s / (N - p_s))`, a noncentral F variable, exceeds
+    :math:`(e^{D / N} - 1)(N - p_s) / q`: probability about
+    :math:`P(\chi'^2_q(\lambda) > 2 q)` for many frames (:math:`e^{-2} = 0.14` at
+    :math:`\lambda = 0`, when the two motions coincide).  Valid while the fits are locally
+    linear.
 
     Examples
     --------
@@ -262,7 +272,8 @@ def measurability(
     mu0 : sequence of float
         Friction coefficients of the slipping ball.
     state0 : array_like
-        Dimensionless state of the ball at the first frame, e.g. from `state_from_si`.
+        Dimensionless state of the ball at the first frame, e.g. from
+        `~turntable.film.state_from_si`.
         The rolling ball starts from its projection on the no-slip constraint
         (`turntable.no_slip_state`: same position and conserved quantities).
     setup, camera : Setup, Camera
@@ -314,7 +325,7 @@ def indistinguishable_above(table: Measurability, probability: float) -> float:
     table : Measurability
         From `measurability`, on an increasing grid of mu0.
     probability : float
-        Required probability of selecting the slipping model, in (e^-2, 1).
+        Required probability of selecting the slipping model, in :math:`(e^{-2}, 1)`.
 
     Returns
     -------
@@ -410,6 +421,22 @@ def measurability_json(
     `reliable_range` of mu0 where the predicted relative error is below it.
 
     ``rig`` is a `turntable.film.Rig` (set-up, camera, start state, mass).
+
+    Parameters
+    ----------
+    table : Measurability
+        A table of `measurability`.
+    probability : float
+        Required probability of selecting the slipping model (`indistinguishable_above`).
+    rig : Rig
+        Set-up, camera, start state and mass of the films of the table.
+    reliable_level : float, optional
+        Largest predicted relative error of a reliable measurement (`reliable_range`).
+
+    Returns
+    -------
+    dict
+        The JSON object.
 
     Examples
     --------

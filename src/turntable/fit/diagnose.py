@@ -31,7 +31,19 @@ MAX_FRAME_STEP = 1.0
 
 
 def frame_step(film: Film, setup: Setup) -> float:
-    """Return the median step Omega (t_{i+1} - t_i) between frames, rad (0 for one frame).
+    r"""Return the median step :math:`\Omega (t_{i+1} - t_i)` between frames, rad (0 for one frame).
+
+    Parameters
+    ----------
+    film : Film
+        The film (its frame times).
+    setup : Setup
+        Ball and turntable (Omega).
+
+    Returns
+    -------
+    float
+        The median step, rad.
 
     Examples
     --------
@@ -239,7 +251,8 @@ def checked_selection(result: FilmFit, check: Consistency | None) -> FilmFit:
     >>> from turntable.film import Camera, Setup, state_from_si
     >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
     >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
-    >>> film = fit.simulate_film("slipping", 3.0, z0, setup, Camera(30.0, 2e-4, 10.0), seed=2)
+    >>> camera = Camera(30.0, 2e-4, 10.0)
+    >>> film = fit.simulate_film("slipping", 3.0, z0, setup, camera, seed=2)
     >>> wrong = setup._replace(omega=3.5 * 1.01)
     >>> result = fit.fit_film(film, wrong)
     >>> checked = fit.checked_selection(result, fit.consistency(film, wrong, result))
@@ -293,7 +306,7 @@ def problems(
         (Omega dt above `MAX_FRAME_STEP`: a time unit or rate mistake); each fit that did
         not converge; each coefficient at a bound of `BOUNDS`, with its one-sided limit;
         each fitted Omega at the end of its range; a selection that is not decisive or not
-        made (`FilmFit.reason`); a relative standard error above `LINEAR_RELATIVE_ERROR`
+        made (``FilmFit.reason``); a relative standard error above `LINEAR_RELATIVE_ERROR`
         of the selected model (of each, with none selected or a selection that is not
         decisive, `checked_selection`); residuals of the selected
         model (or, with none selected,

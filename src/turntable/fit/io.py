@@ -30,7 +30,7 @@ def result_json(
     source: str = "",
     check: Consistency | None = None,
 ) -> dict[str, Any]:
-    """Return the fit as the JSON object that ``turntable fit`` prints.
+    r"""Return the fit as the JSON object that ``turntable fit`` prints.
 
     Parameters
     ----------
@@ -41,9 +41,9 @@ def result_json(
         Its ``synthetic`` flag (a SYNTHETIC comment in the file) is copied to "data".
     mass : float, optional
         Mass of the ball in kg; adds the dimensional coefficients
-        mu0_dim = mu0 m Omega (kg/s, force per slip velocity) and
-        delta_dim = delta m R^2 Omega (kg m^2/s, torque per angular velocity), with the
-        model's Omega (the fitted one with ``fit_omega``).
+        :math:`\mu_{0,\text{dim}} = \mu_0 m \Omega` (kg/s, force per slip velocity) and
+        :math:`\delta_\text{dim} = \delta m R^2 \Omega` (kg m²/s, torque per angular
+        velocity), with the model's :math:`\Omega` (the fitted one with ``fit_omega``).
     source : str
         Name of the data file.
     check : Consistency, optional
@@ -241,10 +241,22 @@ def result_json(
 
 
 def setup_from_json(result: dict[str, Any], model: str | None = None) -> Setup:
-    """Return the `Setup` recorded in a result of `result_json` (``turntable fit``).
+    """Return the `~turntable.film.Setup` recorded in a result of `result_json` (``turntable fit``).
 
     With ``model``, Omega and the axis are that model's (fitted ones with ``--fit-omega``,
     ``--fit-axis``).
+
+    Parameters
+    ----------
+    result : dict
+        A result of `result_json` (``turntable fit``), read back from JSON.
+    model : {"slipping", "rolling_resistance"}, optional
+        The model whose Omega and axis are taken; by default the given ones.
+
+    Returns
+    -------
+    Setup
+        Ball and turntable.
 
     Examples
     --------
@@ -269,6 +281,18 @@ def setup_from_json(result: dict[str, Any], model: str | None = None) -> Setup:
 def fitted_coefficient(result: dict[str, Any], model: str) -> float:
     """Return the coefficient with which a model's path is drawn: the fitted value, or
     where the search stopped when it is reported as a limit (``*_search_bound``).
+
+    Parameters
+    ----------
+    result : dict
+        A result of `result_json` (``turntable fit``), read back from JSON.
+    model : {"slipping", "rolling_resistance"}
+        The model.
+
+    Returns
+    -------
+    float
+        The dimensionless coefficient.
 
     Examples
     --------

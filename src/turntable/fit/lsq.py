@@ -282,7 +282,7 @@ def fit_model(
     ln c, and ln Omega, a if asked (module docstring).  A trial point at which the solution
     would overflow a double over the film (`turntable.max_time`, relevant only for very long
     films) gets a huge residual, so the optimiser steps back.  A coefficient at a bound of
-    `BOUNDS` gets a one-sided 95 % limit (`_limit`).
+    `BOUNDS` gets a one-sided 95 % limit (``_limit``).
 
     Examples
     --------
@@ -370,7 +370,7 @@ def fit_model(
 def fit_film(
     film: Film, setup: Setup, *, fit_omega: bool = False, fit_axis: bool = False
 ) -> FilmFit:
-    """Fit both models to a film and select one by AICc (see `fit_model`, `FilmFit`).
+    r"""Fit both models to a film and select one by AICc (see `fit_model`, `FilmFit`).
 
     Parameters
     ----------
@@ -385,13 +385,14 @@ def fit_film(
 
     Notes
     -----
-    Akaike weights: w_i = exp(-Delta_i / 2) / sum_j exp(-Delta_j / 2), the relative
+    Akaike weights: :math:`w_i = e^{-\Delta_i / 2} / \sum_j e^{-\Delta_j / 2}`, the relative
     likelihood of each model given the data; AICc differences of `DECISIVE` (10) or more
     are read as decisive, provided the selected model also fits at least as well (its RSS
     is not larger): otherwise the difference is the penalty on the other model's extra
-    parameters alone, which on a short film exceeds 10 by itself (2 q + 2 K_s (K_s + 1) /
-    (N - K_s - 1) - 2 K_r (K_r + 1) / (N - K_r - 1) = 10.6 for 10 frames) and says nothing
-    about the film.  AICc = AIC + 2 K (K + 1) / (N - K - 1) corrects AIC's overconfidence
+    parameters alone, which on a short film exceeds 10 by itself
+    (:math:`2 q + \frac{2 K_s (K_s + 1)}{N - K_s - 1} - \frac{2 K_r (K_r + 1)}{N - K_r - 1} = 10.6`
+    for 10 frames) and says nothing about the film.
+    :math:`\mathrm{AICc} = \mathrm{AIC} + 2 K (K + 1) / (N - K - 1)` corrects AIC's overconfidence
     on short films; with N - K - 1 < `MIN_DOF` for the larger model no model is selected,
     because the comparison then rests on a handful of residual degrees of freedom (with
     AIC, 5-frame films selected the wrong model in half the cases, some of them with a

@@ -47,6 +47,18 @@ def n_parameters(model: str, fit_omega: bool = False, fit_axis: bool = False) ->
     with ``fit_axis`` the axis (x, y) of the rolling model (the slipping model does not
     depend on the axis).
 
+    Parameters
+    ----------
+    model : {"slipping", "rolling_resistance"}
+        The model.
+    fit_omega, fit_axis : bool, optional
+        Whether Omega and (for the rolling model) the axis are fitted too.
+
+    Returns
+    -------
+    int
+        The number p.
+
     Examples
     --------
     The coefficient and the initial state (6 numbers slipping, 4 rolling), and Omega if free:
@@ -63,6 +75,16 @@ def min_frames(fit_omega: bool = False, fit_axis: bool = False) -> int:
 
     Each frame gives N = 2 n coordinates; AICc needs N - K - 1 >= `MIN_DOF` with
     K = p + 1 for the model with the most parameters p (`n_parameters`).
+
+    Parameters
+    ----------
+    fit_omega, fit_axis : bool, optional
+        Whether Omega and (for the rolling model) the axis are fitted too.
+
+    Returns
+    -------
+    int
+        The number of frames.
 
     Examples
     --------

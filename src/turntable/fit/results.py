@@ -33,7 +33,7 @@ NOISE_FACTOR = 3.0
 
 
 class ModelFit(NamedTuple):
-    """The fit of one model to a film.
+    r"""The fit of one model to a film.
 
     Attributes
     ----------
@@ -50,7 +50,7 @@ class ModelFit(NamedTuple):
     t0 : float
         Time of the first frame, s.
     rss : float
-        Residual sum of squares, m^2.
+        Residual sum of squares, m².
     rms_residual : float
         sqrt(RSS / N), m: the rms residual per coordinate (N = 2n coordinates).
     aic : float
@@ -69,7 +69,7 @@ class ModelFit(NamedTuple):
         "upper" or "lower": the end of `BOUNDS` the coefficient ran into; None inside.
     limit : float
         At a bound, the one-sided 95 % limit (lower limit at the upper bound, upper limit
-        at the lower one, `_limit`); nan otherwise.
+        at the lower one, ``_limit``); nan otherwise.
     omega, omega_stderr : float
         Omega (rad/s) of the fit: the given one, or the fitted one with its standard error
         (nan when given).
@@ -81,9 +81,9 @@ class ModelFit(NamedTuple):
     autocorrelation, autocorrelation_sd : float
         Lag-1 autocorrelation of the residuals and its spread for white noise (`whiteness`).
     orbital_rate : float
-        Angular rate of the growing mode (beta, or Im lambda_g) in units of Omega: the ball
-        turns about its spiral centre orbital_rate Omega T / (2 pi) times in a film of
-        length T.
+        Angular rate of the growing mode (:math:`\beta`, or :math:`\operatorname{Im}\lambda_g`)
+        in units of :math:`\Omega`: the ball turns about its spiral centre
+        :math:`\text{orbital\_rate}\; \Omega T / (2\pi)` times in a film of length T.
     exact : bool
         Whether the fit reproduces the positions to rounding (`EXACT_FIT`): then there is no
         noise, the residuals count as white, and AICc cannot weigh it against another
@@ -122,7 +122,8 @@ class ModelFit(NamedTuple):
 
     @property
     def ci95(self) -> tuple[float, float]:
-        """95 % interval exp(ln c -+ 1.96 se(ln c)) of the coefficient (not at a bound)."""
+        r"""95 % interval :math:`e^{\ln c \mp 1.96\, \mathrm{se}(\ln c)}` of the coefficient
+        (not at a bound)."""
         lo = math.exp(math.log(self.coefficient) - Z95 * self.log_stderr)
         hi = math.exp(min(math.log(self.coefficient) + Z95 * self.log_stderr, 709.0))
         return lo, hi
@@ -148,7 +149,7 @@ class ModelFit(NamedTuple):
     @property
     def describes(self) -> bool:
         """Whether the model describes the film: white residuals, or correlated ones at
-        most `NOISE_FACTOR` times the film's noise (`noise`)."""
+        most `NOISE_FACTOR` times the film's noise (``noise``)."""
         return self.white or self.noise_ratio <= NOISE_FACTOR
 
 
@@ -157,6 +158,20 @@ def aic(rss: float, n_observations: int, n_params: int) -> float:
 
     The + 1 counts the noise variance, estimated as RSS / N.  An exact fit (RSS = 0,
     only for noiseless data) counts as RSS = the smallest positive double.
+
+    Parameters
+    ----------
+    rss : float
+        Residual sum of squares, >= 0.
+    n_observations : int
+        Number N of fitted coordinates.
+    n_params : int
+        Number p of fitted parameters.
+
+    Returns
+    -------
+    float
+        The criterion.
 
     Examples
     --------
@@ -201,7 +216,7 @@ def aicc(rss: float, n_observations: int, n_params: int) -> float:
 
 
 def whiteness(residuals: ArrayLike) -> tuple[float, float]:
-    """Return the lag-1 autocorrelation of residuals and its spread for white noise.
+    r"""Return the lag-1 autocorrelation of residuals and its spread for white noise.
 
     Parameters
     ----------
@@ -211,11 +226,11 @@ def whiteness(residuals: ArrayLike) -> tuple[float, float]:
     Returns
     -------
     rho : float
-        sum_c sum_i e_{i,c} e_{i+1,c} / sum_c sum_i e_{i,c}^2, pooled over the two
-        coordinates (0 for residuals that are all 0).
+        :math:`\sum_c \sum_i e_{i,c} e_{i+1,c} / \sum_c \sum_i e_{i,c}^2`, pooled over the
+        two coordinates (0 for residuals that are all 0).
     sd : float
-        1 / sqrt(2 (n - 1)), the standard deviation of rho for independent noise (the
-        Durbin-Watson statistic is about 2 (1 - rho)).
+        :math:`1 / \sqrt{2 (n - 1)}`, the standard deviation of rho for independent noise
+        (the Durbin-Watson statistic is about :math:`2 (1 - \rho)`).
 
     Notes
     -----
@@ -249,7 +264,7 @@ def whiteness(residuals: ArrayLike) -> tuple[float, float]:
 
 
 def frame_noise(t: ArrayLike, xy: ArrayLike) -> float:
-    """Return the noise per coordinate of tracked positions, from their third differences.
+    r"""Return the noise per coordinate of tracked positions, from their third differences.
 
     Parameters
     ----------
@@ -261,16 +276,17 @@ def frame_noise(t: ArrayLike, xy: ArrayLike) -> float:
     Returns
     -------
     float
-        sqrt(median(e^2) / 0.4549) over both coordinates, e the third divided differences
-        of four consecutive frames divided by the root of the sum of their squared weights;
-        nan for fewer than 4 frames.
+        :math:`\sqrt{\operatorname{median}(e^2) / 0.4549}` over both coordinates, e the third
+        divided differences of four consecutive frames divided by the root of the sum of
+        their squared weights; nan for fewer than 4 frames.
 
     Notes
     -----
-    The third divided difference of frames i..i+3 is sum_j w_j x_j, w_j = 1 / prod_{k != j}
-    (t_j - t_k): it vanishes for a quadratic, so a motion smooth over four frames leaves
-    little of it, while independent noise of variance s^2 gives it the variance
-    s^2 sum_j w_j^2 (for equal steps, the binomial 1, 3, 3, 1: 20 s^2 / (6 dt^3)^2).
+    The third divided difference of frames i..i+3 is :math:`\sum_j w_j x_j`,
+    :math:`w_j = 1 / \prod_{k \ne j} (t_j - t_k)`: it vanishes for a quadratic, so a motion
+    smooth over four frames leaves little of it, while independent noise of variance
+    :math:`s^2` gives it the variance :math:`s^2 \sum_j w_j^2` (for equal steps, the
+    binomial 1, 3, 3, 1: :math:`20 s^2 / (6\, \Delta t^3)^2`).
     The frame times count as they are, so a variable frame rate (or a gap) is no noise.
     0.4549 is the median of chi-square with one degree of freedom: the median keeps the
     few differences across a gap of lost frames from counting.  Noise correlated from
@@ -281,7 +297,8 @@ def frame_noise(t: ArrayLike, xy: ArrayLike) -> float:
     >>> import numpy as np
     >>> from turntable import fit
     >>> t = np.sort(np.random.default_rng(1).uniform(0.0, 2.0, 400))  # uneven steps
-    >>> xy = np.c_[np.cos(t), np.sin(t)] + np.random.default_rng(0).normal(0, 1e-3, (400, 2))
+    >>> noise = np.random.default_rng(0).normal(0, 1e-3, (400, 2))
+    >>> xy = np.c_[np.cos(t), np.sin(t)] + noise
     >>> print(f"{fit.frame_noise(t, xy):.1e}")
     1.0e-03
     """
@@ -302,7 +319,7 @@ def frame_noise(t: ArrayLike, xy: ArrayLike) -> float:
 
 
 class FilmFit(NamedTuple):
-    """Both models fitted to one film, and the selection.
+    r"""Both models fitted to one film, and the selection.
 
     Attributes
     ----------
@@ -314,7 +331,8 @@ class FilmFit(NamedTuple):
     aicc_difference : float
         AICc of the other model minus AICc of the selected one (>= 0); nan if none.
     akaike_weights : dict
-        {model: exp(-Delta_i / 2) / sum_j exp(-Delta_j / 2)}, Delta_i = AICc_i - min AICc
+        {model: :math:`e^{-\Delta_i / 2} / \sum_j e^{-\Delta_j / 2}`},
+        :math:`\Delta_i = \mathrm{AICc}_i - \min \mathrm{AICc}`
         (nan if an AICc is undefined).
     decisive : bool
         Whether a model is selected with an AICc difference of at least `DECISIVE` and

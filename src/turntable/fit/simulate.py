@@ -20,7 +20,7 @@ def simulate_film(
     camera: Camera,
     seed: int,
 ) -> Film:
-    """Return a synthetic film: the exact motion of one model plus Gaussian tracking noise.
+    r"""Return a synthetic film: the exact motion of one model plus Gaussian tracking noise.
 
     Parameters
     ----------
@@ -29,10 +29,11 @@ def simulate_film(
         rolling without slipping with rolling resistance (`turntable.rolling.solve`,
         coefficient delta).
     coefficient : float
-        mu0 / (m Omega) or delta / (m R^2 Omega), dimensionless, > 0.
+        :math:`\mu_0 / (m \Omega)` or :math:`\delta / (m R^2 \Omega)`, dimensionless, > 0.
     state0 : array_like
-        Dimensionless state (x, y, vx, vy, wx, wy) at t = 0 (see `state_from_si`); for
-        the rolling model it must satisfy the no-slip constraint.
+        Dimensionless state (x, y, vx, vy, wx, wy) at t = 0 (see
+        `~turntable.film.state_from_si`); for the rolling model it must satisfy the no-slip
+        constraint.
     setup : Setup
         Ball and turntable.
     camera : Camera
@@ -44,7 +45,7 @@ def simulate_film(
     -------
     Film
         Frames at t = i / fps; x, y = R (x, y)(Omega t) + axis + noise, each coordinate
-        with independent N(0, noise^2) errors; marked ``synthetic``.
+        with independent :math:`N(0, \text{noise}^2)` errors; marked ``synthetic``.
 
     Examples
     --------
@@ -77,6 +78,16 @@ def synthetic_header(
     seed: int,
 ) -> list[str]:
     """Return the comment lines that mark a film SYNTHETIC and give its true parameters.
+
+    Parameters
+    ----------
+    model, coefficient, state0, setup, camera, seed
+        The arguments of `simulate_film` that made the film.
+
+    Returns
+    -------
+    list of str
+        The comment lines, without the ``#``.
 
     Examples
     --------

@@ -144,7 +144,7 @@ def start_values(
     Variable projection (module docstring): the residual of the best amplitudes on a
     grid of `GRID_PER_DECADE` points per decade over `BOUNDS`, then a bounded search
     (Brent) in ln c between the neighbours of the best grid point; on a subset of the
-    frames (`START_FRAMES`, `START_STEP`), which is plenty for a start.
+    frames (`START_FRAMES`, ``START_STEP``), which is plenty for a start.
 
     Examples
     --------

@@ -6,7 +6,7 @@ ball and the mark, told apart by how they move; seeds), `follow` (both through t
 `blobs`: blobs of a colour and the ball's outline), `calibrate` (the camera, the platter's
 rate and a rolling shutter's readout, on the pinhole model of `camera`) and `check` (a track
 that contradicts itself is refused).  `render.render_video` renders SYNTHETIC videos from the
-exact solutions.  `cli` is the command ``turntable track``; `plot` draws a tracked video, or
+exact solutions.  ``cli`` is the command ``turntable track``; ``plot`` draws a tracked video, or
 what was found before an error.  PyAV and OpenCV come with the extra ``turntable[video]``;
 without them the modules import, and reading a video says what to install.
 """

@@ -3,11 +3,11 @@ colour than the platter's, as components with their centres to a fraction of a p
 
 A pixel's *share* is its CIELAB colour's step from the platter's towards the target's,
 as a fraction of the whole step: 0 on the platter, 1 on the target.  A blob is a connected
-component of shares above `THRESHOLD` (a shadow, a groove or the platter's grain stays below
+component of shares above ``THRESHOLD`` (a shadow, a groove or the platter's grain stays below
 it), its holes filled (a highlight).  Its centre weighs each pixel of the filled blob by 1,
 and each pixel of the one-pixel band about it by the part of it the blob covers: its share
-ramped from 0 at `FLOOR` to 1 at 1 - `FLOOR` (1/2 at 1/2), so that neither the shading of a
-ball nor a shadow beside it (a share below `FLOOR`) pulls the centre aside.
+ramped from 0 at ``FLOOR`` to 1 at 1 - ``FLOOR`` (1/2 at 1/2), so that neither the shading of a
+ball nor a shadow beside it (a share below ``FLOOR``) pulls the centre aside.
 """
 
 from __future__ import annotations
@@ -174,7 +174,7 @@ def outline_centre(
 
     Along each of ``rays`` rays from ``start``, the outline is the first place, going out, where
     the share falls most steeply (its fall per pixel at least half the steepest along the ray,
-    from above `THRESHOLD`, to below `BELOW`: not off a highlight), to a fraction of a pixel.
+    from above ``THRESHOLD``, to below `BELOW`: not off a highlight), to a fraction of a pixel.
     The circle of the given radius nearest those points is fitted by least squares, points more
     than `EDGE_OFF` px or 3 spreads off it dropped: where a ball's shaded limb is too dim to
     show, the terminator passes for the outline and lies inside the circle; a shadow beside the

@@ -1,7 +1,7 @@
 """Stage 5, the camera: from the rim of the platter and a mark turning with it.
 
 The rim is a circle of radius P in the plane z = 0; the mark, a point of the platter at a
-distance r_m from the axis, is at the angle phi0 + Omega t.  `calibrate` fits, by least
+distance r_m from the axis, is at the angle phi0 + Omega t.  ``calibrate`` fits, by least
 squares, a pinhole camera (`turntable.video.camera`: focal length, tilt, roll, look-at
 point, distance; the principal point at the image's centre, square pixels) together with
 r_m, phi0 and Omega, to the image points of the rim and the tracked image of the mark, and

@@ -88,6 +88,20 @@ def apply(h: NDArray[np.float64], points: ArrayLike) -> NDArray[np.float64]:
 def project(pose: Pose, points: ArrayLike, height: float = 0.0) -> NDArray[np.float64]:
     """Image points (u, v) of points (x, y) of the plane z = height.
 
+    Parameters
+    ----------
+    pose : Pose
+        The camera.
+    points : array_like
+        Points (x, y) of the plane, m, shape (..., 2).
+    height : float, optional
+        Height z of the plane, m.
+
+    Returns
+    -------
+    numpy.ndarray
+        The image points (u, v), px, of the shape of ``points``.
+
     Examples
     --------
     The axis seen by a camera 40 cm away looking straight at it is at the image's centre:
@@ -102,6 +116,20 @@ def project(pose: Pose, points: ArrayLike, height: float = 0.0) -> NDArray[np.fl
 
 def back_project(pose: Pose, pixels: ArrayLike, height: float = 0.0) -> NDArray[np.float64]:
     """Points (x, y) of the plane z = height seen at the image points ``pixels`` (u, v).
+
+    Parameters
+    ----------
+    pose : Pose
+        The camera.
+    pixels : array_like
+        Image points (u, v), px, shape (..., 2).
+    height : float, optional
+        Height z of the plane, m.
+
+    Returns
+    -------
+    numpy.ndarray
+        The points (x, y), m, of the shape of ``pixels``.
 
     Examples
     --------
@@ -133,6 +161,20 @@ def image_radius(pose: Pose, pixels: ArrayLike, radius: float) -> NDArray[np.flo
     """Radius (px) of the image of a sphere of radius ``radius`` whose centre, in the plane
     z = radius, is seen at ``pixels`` (u, v): f radius / its distance from the camera.
 
+    Parameters
+    ----------
+    pose : Pose
+        The camera.
+    pixels : array_like
+        Image points (u, v) of the sphere's centre, px, shape (..., 2).
+    radius : float
+        Radius of the sphere, m.
+
+    Returns
+    -------
+    numpy.ndarray
+        The radius of the image, px, of shape ``pixels.shape[:-1]``.
+
     Examples
     --------
     A ball of radius 1 cm, 40 cm below a camera of focal length 1000 px looking down at it:
@@ -158,6 +200,22 @@ def sphere_centre(
     so its image's centre is at f (tan(phi + a) + tan(phi - a)) / 2 from the principal
     point, the image of its centre at f tan(phi).  The shift is removed by fixed-point
     iteration from the point that ignores it.
+
+    Parameters
+    ----------
+    pose : Pose
+        The camera.
+    pixels : array_like
+        Centroids (u, v) of the images of the spheres, px, shape (..., 2).
+    radius : float
+        Radius of the spheres, m.
+    iterations : int, optional
+        Fixed-point iterations.
+
+    Returns
+    -------
+    numpy.ndarray
+        The centres (x, y), m, of the shape of ``pixels``.
 
     Examples
     --------

@@ -1,13 +1,13 @@
-"""Stage 6, checks: a track that contradicts itself is refused before anything is written.
+r"""Stage 6, checks: a track that contradicts itself is refused before anything is written.
 
-Each check compares two things the video says independently; `checks` returns every one,
-with its value and its limit, and `first_failure` the line that names the first that failed
+Each check compares two things the video says independently; ``checks`` returns every one,
+with its value and its limit, and ``first_failure`` the line that names the first that failed
 and the option that would help.
 
-- ``rate``: the mark turns at a rate a platter can have (`RATE_RANGE`), or within 1 % of
+- ``rate``: the mark turns at a rate a platter can have (``RATE_RANGE``), or within 1 % of
   ``--rpm``;
 - ``mark_on_circle``: the mark's images lie on the fitted camera's circle, turning steadily
-  (rms within `MARK_RMS_PX` px or half the mark's size);
+  (rms within ``MARK_RMS_PX`` px or half the mark's size);
 - ``axis``: the centre of the mark's circle, seen through the camera the rim alone gives, is
   the rim's centre (within 3 % of P);
 - ``tilt``: the mark's circle and the rim are seen under the same tilt (their images' axis
@@ -15,7 +15,7 @@ and the option that would help.
 - ``ball_moves``: the ball moves relative to the platter (the spread of its path in the
   platter's frame at least R / 2), not rigidly with it;
 - ``ball_path``: the ball does not jump: at most 2 % of its positions are more than R / 4
-  (and what an acceleration of 2 Omega^2 P could do) off the line between their neighbours;
+  (and what an acceleration of :math:`2 \Omega^2 P` could do) off the line between their neighbours;
 - ``ball_size``: the ball's image is the size that R and the fitted camera predict (within
   a factor 0.7-1.4 in radius).
 """

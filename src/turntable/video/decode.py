@@ -1,5 +1,5 @@
-"""Stage 1, decoding: a video's frames as `Picture` (luma and chroma planes, no copy), with
-the times of the container (PyAV); `lab` turns a window of a picture into CIELAB."""
+"""Stage 1, decoding: a video's frames as ``Picture`` (luma and chroma planes, no copy), with
+the times of the container (PyAV); ``lab`` turns a window of a picture into CIELAB."""
 
 from __future__ import annotations
 
@@ -198,7 +198,7 @@ def _rgb(picture: Picture, box: tuple[slice, slice] | None) -> NDArray[np.float3
 def yuv420(rgb_img: NDArray[np.uint8]) -> NDArray[np.uint8]:
     """An RGB image (h, w, 3 or 4; h and w even) as one 4:2:0 video-range BT.601 frame, shape
     (3 h / 2, w), for ``av.VideoFrame.from_ndarray(..., format="yuv420p")``: the inverse of
-    `lab`'s reading, with the same (H.264's) chroma siting."""
+    ``lab``'s reading, with the same (H.264's) chroma siting."""
     x = rgb_img[..., :3].astype(np.float32) / 255.0
     h, w = x.shape[:2]
     y = 16.0 + 219.0 * (x @ np.array([0.299, 0.587, 0.114], np.float32))

@@ -1,13 +1,13 @@
 """Stage 3, finding the ball and the mark on the first frames.
 
 Everything on the platter whose colour differs from the platter's by more than its grain
-(CIELAB distance above `CONTRAST_NOISE` times the platter's median one, and at least
-`MIN_CONTRAST`) is a candidate, bright or dark, of any hue.  Each candidate is followed over
-the first `PROBE_SECONDS` of the video and its path seen on the platter's plane through the
+(CIELAB distance above ``CONTRAST_NOISE`` times the platter's median one, and at least
+``MIN_CONTRAST``) is a candidate, bright or dark, of any hue.  Each candidate is followed over
+the first ``PROBE_SECONDS`` of the video and its path seen on the platter's plane through the
 camera that the rim alone gives.  What tells them apart is how they move:
 
 - the **mark** turns rigidly with the platter: on a circle about the axis, at least
-  `MARK_MIN_RADIUS` of P from it, at a constant rate that a platter can have (`RATE_RANGE`,
+  ``MARK_MIN_RADIUS`` of P from it, at a constant rate that a platter can have (``RATE_RANGE``,
   or within 5 % of ``--rpm``); of several, the one nearest the rim;
 - the **ball** does not; it is round and of the size that R and the rim's scale predict; of
   several, the one that differs most from the platter (not its shadow).
@@ -36,7 +36,7 @@ except ImportError:  # without the extra [video]
     cv2 = None
 
 #: A candidate differs from the platter by this many times the platter's median distance
-#: from its own colour, and by at least `MIN_CONTRAST` (CIELAB units).
+#: from its own colour, and by at least ``MIN_CONTRAST`` (CIELAB units).
 CONTRAST_NOISE, MIN_CONTRAST = 5.0, 10.0
 #: Candidates are followed over this long (s), at least `PROBE_FRAMES` frames.
 PROBE_SECONDS, PROBE_FRAMES = 0.3, 10

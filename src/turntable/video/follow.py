@@ -5,7 +5,7 @@ circle about the rim's centre), as a blob of its own colour (`turntable.video.bl
 about its own size; a ball whose blob runs into a label of a like colour, by its
 outline.  Where the mark passes next to the ball, so that their images may touch,
 neither is measured on that frame; a frame where the ball is not found is a gap, never a
-guessed position.  The rim's points are collected on `RIM_FRAMES` frames spread over the
+guessed position.  The rim's points are collected on ``RIM_FRAMES`` frames spread over the
 video.
 """
 

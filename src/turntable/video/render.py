@@ -6,7 +6,7 @@ label at its centre and a mark (a disc, a square or a strip of tape) near its ri
 table; a shaded ball (matte or shiny) whose centre is R above the platter, moving as one of
 the friction models says (`turntable.fit.positions`), and its shadow; what a phone adds:
 motion blur, a rolling shutter, barrel distortion, mains flicker, sensor noise, H.264
-(libx264, `turntable.video.decode.yuv420`).  By default the scene is grey: a dark platter, a
+(libx264, ``turntable.video.decode.yuv420``).  By default the scene is grey: a dark platter, a
 white round mark, a bright matte ball, no label, no shadow.  The file's name must contain
 SYNTHETIC, and its metadata say it is rendered.
 """
@@ -108,7 +108,7 @@ class Scene(NamedTuple):
         Strength of the ball's shadow on the platter (0 none, 0.5 half the light removed):
         the sphere's projection along the light, with an edge soft over ~1.5 px.
     lens_k1 : float
-        Radial distortion of the lens, x_d = x (1 + k1 r^2) in image coordinates
+        Radial distortion of the lens, :math:`x_d = x (1 + k_1 r^2)` in image coordinates
         normalised by the focal length; < 0 is barrel distortion (in [-0.3, 0.3]).
     readout : float
         Rolling shutter: row v is exposed from t + readout v / (height fps), readout a
@@ -382,7 +382,7 @@ def render_video(
     seed : int
         Seed of the texture and the noise.
     pose : Pose, optional
-        The camera; by default `default_pose`.
+        The camera; by default ``default_pose``.
 
     Returns
     -------
@@ -393,7 +393,7 @@ def render_video(
     -----
     Frame i, at time t_i = i / fps of the video (moved by the jitter, rounded to the
     container's 1/90000 s), shows the scene averaged over the shutter's opening
-    (`BLUR_SAMPLES` instants), the model's times t_i to t_i + e, e = shutter / fps;
+    (``BLUR_SAMPLES`` instants), the model's times t_i to t_i + e, e = shutter / fps;
     ``state0`` is the state at the first opening, and the true position of frame i is the
     one at its middle, t_i + e / 2, as a tracker sees it. The ball's image is drawn by
     casting rays at a sphere whose centre is at height R, so that its image is the

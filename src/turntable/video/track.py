@@ -1,13 +1,13 @@
 """From a video to a film: the stages in order, and the `Track` they make.
 
-`track_video` decodes the video (`decode`), finds the platter's rim on the first frame
-(`platter`), the ball and the mark on the first frames (`find`), follows both through the
-video (`follow`), fits the camera and the platter's rate to the rim and the turning mark
-(`calibrate`) and checks that what it found agrees with itself (`check`).  The ball's centre
+`track_video` decodes the video (``decode``), finds the platter's rim on the first frame
+(``platter``), the ball and the mark on the first frames (``find``), follows both through the
+video (``follow``), fits the camera and the platter's rate to the rim and the turning mark
+(``calibrate``) and checks that what it found agrees with itself (``check``).  The ball's centre
 is the point R above the platter whose sphere's image is centred on the ball's blob
-(`camera.sphere_centre`).  A frame where the ball is not measured is a gap of the film (never
-a guessed position), named in the warnings.  Each stage takes plain data and returns plain
-data.
+(`~turntable.video.camera.sphere_centre`).  A frame where the ball is not measured is a gap
+of the film (never a guessed position), named in the warnings.  Each stage takes plain data
+and returns plain data.
 """
 
 from __future__ import annotations
@@ -39,7 +39,7 @@ MIN_RIM_CONTRAST = 8.0
 
 class FirstLook(NamedTuple):
     """What was found on the first frame: the image (RGB), the rim (None if not found) and
-    the candidates for the ball and the mark (`turntable.video.find.Candidate`)."""
+    the candidates for the ball and the mark (``turntable.video.find.Candidate``)."""
 
     image: NDArray[np.uint8]
     rim: Ellipse | None
@@ -159,7 +159,8 @@ def track_video(
     >>> truth = render_video(path, "slipping", 2.0, [7, 0, 0, 0.4, 0, 0], setup, scene)
     >>> track, warnings = track_video(path, ball_radius=0.008, platter_radius=0.15)
     >>> err = np.hypot(track.film.x - truth.film.x, track.film.y - truth.film.y)
-    >>> print(f"{track.film.t.size} frames, Omega {abs(track.calibration.omega):.3f} rad/s, "
+    >>> omega = abs(track.calibration.omega)
+    >>> print(f"{track.film.t.size} frames, Omega {omega:.3f} rad/s, "
     ...       f"rms error {np.sqrt(np.mean(err**2)) / 0.008:.2f} R")
     31 frames, Omega 4.708 rad/s, rms error 0.03 R
     """

@@ -146,9 +146,8 @@ def test_the_campaign_in_the_build(clean_build):
     for r in rows:
         assert r["selected"] == r["true_model"], r
         error = abs(float(r["value"]) - float(r["true_value"]))
-        if r["file"].endswith(".csv"):
-            assert error < 4 * float(r["stderr"]), r
-        else:  # a tracked video: errors correlated from frame to frame, a standard error too small
-            assert error < 0.05 * float(r["true_value"]), r
+        # a tracked video too: its errors drift, and its standard error allows for that
+        assert error < 4 * float(r["stderr"]), r
+        assert error < 0.05 * float(r["true_value"]), r
     log = (clean_build / "logs/campaign/summary.log").read_text()
     assert log.startswith(f"{len(rows)} films fitted, 0 failed\n")

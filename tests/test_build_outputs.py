@@ -49,9 +49,13 @@ def paper_tree(clean_build: Path, tmp_path_factory: pytest.TempPathFactory) -> P
     shutil.copy2(clean_build / "results/claims.json", tree / "results/claims.json")
     # As scripts/build_paper.py writes it; a made-up commit, distinct from the claims report's.
     record = provenance(ROOT) | {"git_commit": BUILT_FROM, "git_dirty": True}
-    build = {"provenance": record, "repository": config["paper"]["repository"]}
+    build = {"provenance": record, "repository": REPOSITORY}
     (tree / "results" / "build.json").write_text(json.dumps(build))
     return tree
+
+
+#: A repository address given in the configuration (the default is none).
+REPOSITORY = "https://example.org/turntable"
 
 
 def test_pdf_names_the_commit_that_built_it_and_links_the_scripts(paper_tree: Path) -> None:
@@ -63,10 +67,19 @@ def test_pdf_names_the_commit_that_built_it_and_links_the_scripts(paper_tree: Pa
     )
     assert built == {"commit": BUILT_FROM, "dirty": True}
     links = set(json.loads(typst.query(main, "link", field="dest", root=str(paper_tree))))
-    repository = full_config()["paper"]["repository"]
     for stem in sorted(p.stem for p in (ROOT / "scripts").glob("fig*.py")):
-        linked = f"{repository}/blob/{BUILT_FROM}/scripts/{stem}.py" in links
+        linked = f"{REPOSITORY}/blob/{BUILT_FROM}/scripts/{stem}.py" in links
         assert linked != (stem in NOT_YET_IN_ARTICLE), stem
+    # without an address (the default: the project has none it can confirm), no link at all
+    assert full_config()["paper"]["repository"] == ""
+    build_json = paper_tree / "results" / "build.json"
+    build = json.loads(build_json.read_text())
+    build_json.write_text(json.dumps(build | {"repository": ""}))
+    try:
+        links = json.loads(typst.query(main, "link", field="dest", root=str(paper_tree)))
+    finally:
+        build_json.write_text(json.dumps(build))
+    assert not [x for x in links if "/blob/" in x or x == ""], links
 
 
 def test_pdf_is_reproducible_and_carries_the_report(paper_tree: Path) -> None:

@@ -133,7 +133,7 @@ def _same_values_in_another_order(copy: Path) -> None:
     restated = {s: dict(reversed(config[s].items())) for s in reversed(list(config))}
     restated["paper"] = {
         "timestamp": 1735689600,
-        "repository": "https://github.com/turntable-developers/turntable",
+        "repository": "",
     }
     (copy / "config/config.yaml").write_text(yaml.safe_dump(restated, sort_keys=False))
 

@@ -76,8 +76,12 @@ test: $(STAMP)
 	$(BIN)/python -m pytest -n 2
 
 # The documentation site from docs/ (guides and the API reference), offline; a warning fails it.
+# Built beside the site, which it replaces only when it builds: no page outlives its source.
 docs: $(DOCS_STAMP)
-	$(BIN)/sphinx-build -M html docs docs/_build -E -W --keep-going -q
+	rm -rf docs/_build/html.new
+	$(BIN)/sphinx-build -b html docs docs/_build/html.new -d docs/_build/doctrees -E -W \
+		--keep-going -q
+	rm -rf docs/_build/html && mv docs/_build/html.new docs/_build/html
 
 lint: $(STAMP)
 	$(BIN)/ruff check src tests benchmarks scripts workflow tools

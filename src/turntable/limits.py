@@ -1,6 +1,6 @@
-"""Asymptotic regimes of the model: small friction (Fig. 2) and the no-slip limit (Section 3).
+r"""Asymptotic regimes of the model: small friction (Fig. 2) and the no-slip limit (Section 3).
 
-All quantities are dimensionless: length R, time 1/Omega, mass m.
+All quantities are dimensionless: length :math:`R`, time :math:`1/\Omega`, mass :math:`m`.
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""Exact solution of dz/dt = L z (2.7)-(2.8) and its no-slip limit (3.3).
+r"""Exact solution of :math:`\dot z = L z` (2.7)-(2.8) and its no-slip limit (3.3).
 
 The six real equations (1.7) are three complex ones: with r = x + i y,
 v = vx + i vy, w = wx + i wy (J acts as multiplication by i),
@@ -140,7 +140,7 @@ def _coefficients(z0: ArrayLike, mu0: float, k: float) -> _Coefficients:
 
 
 def solve(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> NDArray[np.float64]:
-    r"""Return the exact solution z(t) of dz/dt = L z with z(0) = z0.
+    r"""Return the exact solution :math:`z(t)` of :math:`\dot z = L z` with :math:`z(0) = z_0`.
 
     Parameters
     ----------
@@ -428,7 +428,7 @@ def no_slip_state(z0: ArrayLike, k: float) -> NDArray[np.float64]:
 
 
 def slip_velocity(z: ArrayLike) -> NDArray[np.float64]:
-    r"""Return the slip velocity u = v + gamma x w - gamma x r, components (ux, uy).
+    r"""Return the slip velocity :math:`u = v + \gamma \times w - \gamma \times r`, as (ux, uy).
 
     Parameters
     ----------

@@ -244,7 +244,7 @@ def log_damping_ratio(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
 
 
 def log_growth_per_turn(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
-    r"""Return 2 pi alpha1 / beta, the log growth of the spiral per turn.
+    r"""Return :math:`2\pi\alpha_1/\beta`, the log growth of the spiral per turn.
 
     Parameters
     ----------

@@ -52,7 +52,7 @@ class ModelFit(NamedTuple):
     rss : float
         Residual sum of squares, m².
     rms_residual : float
-        sqrt(RSS / N), m: the rms residual per coordinate (N = 2n coordinates).
+        :math:`\sqrt{\mathrm{RSS}/N}`, m: the rms residual per coordinate (N = 2n coordinates).
     aic : float
         N ln(RSS / N) + 2 K, K = p + 1.
     aicc : float

@@ -17,6 +17,7 @@ unexport PYTHONDONTWRITEBYTECODE
 BUILD_STAMP := $(VENV)/.installed-build
 STAMP := $(VENV)/.installed
 DOCS_STAMP := $(VENV)/.installed-docs
+NOTEBOOKS_STAMP := $(VENV)/.installed-notebooks
 PIP_INSTALL := PIP_CONSTRAINT=constraints.txt $(BIN)/python -m pip install --quiet \
 	--disable-pip-version-check --no-compile
 CORES ?= all
@@ -42,9 +43,9 @@ all: $(BUILD_STAMP)
 	@$(REPORT)
 	@$(BIN)/python tools/build_summary.py
 
-# Every script of scripts/ executed as a notebook with its outputs: results/notebooks/ (each
-# written by the job that runs the script; also part of make).
-notebooks: $(BUILD_STAMP)
+# Every script of scripts/ executed as a notebook with its outputs: results/notebooks/ (not
+# part of make, whose outputs depend on no notebook).
+notebooks: $(NOTEBOOKS_STAMP)
 	$(SNAKEMAKE) --cores $(CORES) notebooks
 
 # Self-contained HTML page with every figure and its caption (needs the built figures).
@@ -61,15 +62,19 @@ setup: $(STAMP) $(DOCS_STAMP)
 
 $(BUILD_STAMP): pyproject.toml constraints.txt
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(PIP_INSTALL) -e ".[workflow,notebooks,video]"
+	$(PIP_INSTALL) -e ".[workflow,video]"
 	touch $(BUILD_STAMP)
+
+$(NOTEBOOKS_STAMP): $(BUILD_STAMP)
+	$(PIP_INSTALL) -e ".[workflow,notebooks,video]"
+	touch $(NOTEBOOKS_STAMP)
 
 $(STAMP): $(BUILD_STAMP)
 	$(PIP_INSTALL) -e ".[workflow,test,dev,notebooks,video]"
 	touch $(STAMP)
 
 $(DOCS_STAMP): $(BUILD_STAMP)
-	$(PIP_INSTALL) -e ".[workflow,notebooks,docs]"
+	$(PIP_INSTALL) -e ".[workflow,docs]"
 	touch $(DOCS_STAMP)
 
 test: $(STAMP)

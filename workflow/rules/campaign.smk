@@ -75,7 +75,6 @@ rule campaign:
             ),
             non_empty=True,
         ),
-        notebook=notebook("campaign_summary"),
     log:
         "logs/campaign/summary.log",
     conda:
@@ -87,4 +86,4 @@ rule campaign:
         table=config["campaign"]["table"],
         dpi=config["style"]["dpi"],
     script:
-        "../scripts/as_notebook.py"
+        "../../scripts/campaign_summary.py"

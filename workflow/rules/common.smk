@@ -1,5 +1,5 @@
 # The configuration, checked, and what the rules share: the figures, the package's files,
-# the inputs of a job that runs a script of scripts/ as a notebook.
+# the inputs of a job that runs a script of scripts/ (through Snakemake's script:).
 import json
 from pathlib import Path
 
@@ -61,8 +61,3 @@ STYLE = ["scripts/_style/__init__.py", "scripts/_style/turntable.mplstyle"]
 def script_inputs(name, style=()):
     """Inputs of the job that runs scripts/<name>.py: the script and the code it runs."""
     return {"script": f"scripts/{name}.py", "code": [*PACKAGE, *style]}
-
-
-def notebook(name):
-    """The notebook the job of scripts/<name>.py writes, with the outputs of its run."""
-    return ensure(f"results/notebooks/{name}.ipynb", non_empty=True)

@@ -3,11 +3,12 @@
 Writes N SYNTHETIC films (2,400 frames each by default: the camera of section ``film``,
 240 frames/s for 10 s; models, coefficients and rates drawn at random over the range
 Figure 8 says a film can measure) and their table into a temporary copy of the workflow's
-sources, then times ``snakemake campaign --cores N`` there: one job per film, and the
-gathering job. Records the wall time, the time per film, the CPU time and the load.
+sources, then times ``snakemake campaign --cores N`` there: one job per batch of films
+(``--batch-size``, the configuration's ``campaign.batch_size``), and the gathering job.
+Records the wall time, the time per film, the CPU time and the load.
 
-Run ``python benchmarks/campaign.py [--films 1000] [--cores 2]``; the result is merged into
-``results/benchmarks.json`` under the key ``campaign``.
+Run ``python benchmarks/campaign.py [--films 1000] [--cores 2] [--batch-size 50]``; the
+result is merged into ``results/benchmarks.json`` under the key ``campaign``.
 """
 
 from __future__ import annotations
@@ -66,6 +67,7 @@ def main() -> None:
     parser.add_argument("--films", type=int, default=1000)
     parser.add_argument("--cores", type=int, default=os.cpu_count())
     parser.add_argument("--seed", type=int, default=0)
+    parser.add_argument("--batch-size", type=int, default=50)
     args = parser.parse_args()
     with tempfile.TemporaryDirectory(prefix="turntable-campaign-") as tmp:
         work = Path(tmp)
@@ -74,7 +76,9 @@ def main() -> None:
         start = time.perf_counter()
         table = write_films(work / "films", args.films, args.seed)
         written = time.perf_counter() - start
-        (work / "config/config.yaml").write_text(f"campaign: {{table: {table}}}\n")
+        (work / "config/config.yaml").write_text(
+            f"campaign: {{table: {table}, batch_size: {args.batch_size}}}\n"
+        )
         before = resource.getrusage(resource.RUSAGE_CHILDREN)
         start = time.perf_counter()
         snakemake = str(Path(sys.executable).with_name("snakemake"))
@@ -91,10 +95,12 @@ def main() -> None:
     cpu = after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime
     right = sum(r["selected"] == r["true_model"] for r in summary)
     result = {
-        "command": f"python benchmarks/campaign.py --films {args.films} --cores {args.cores}",
+        "command": f"python benchmarks/campaign.py --films {args.films} --cores {args.cores} "
+        f"--batch-size {args.batch_size}",
         "films": args.films,
         "frames_per_film": 2400,
         "cores": args.cores,
+        "batch_size": args.batch_size,
         "write_films_s": round(written, 1),
         "snakemake_campaign_s": round(wall, 1),
         "per_film_s": round(wall / args.films, 3),

@@ -178,9 +178,9 @@ EDITS = {
         lambda c: _edit_campaign(c, ",felt,", ",wool,"),
         {"campaign", "all"},
     ),
-    "the rate of one film": (
+    "the rate of one film": (  # its batch of batch_size films is fitted again, not the others
         lambda c: _edit_campaign(c, ",45.0,", ",46.0,"),
-        {"campaign_film", "campaign_fit", "campaign", "all"},
+        {"campaign_film": 1, "campaign_fit": 1, "campaign": 1, "all": 1},
     ),
     "the same values in another order": (_same_values_in_another_order, set()),
 }
@@ -193,7 +193,7 @@ def test_a_change_reruns_exactly_the_jobs_it_touches(copy: Path, what: str) -> N
     if expected == "everything":
         expected = set(plan(copy, "--forceall"))
         assert len(expected) >= 20
-    assert set(plan(copy)) == expected
+    assert (plan(copy) if isinstance(expected, dict) else set(plan(copy))) == expected
 
 
 def test_the_animation_moves_frame_by_frame(clean_build: Path) -> None:

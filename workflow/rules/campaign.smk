@@ -21,6 +21,8 @@ try:
 except CampaignError as exc:
     raise WorkflowError(f"campaign: {exc}") from None
 CAMPAIGN_FILMS = {film.name: film for film in CAMPAIGN}
+# The label that groups the films (the first label column unless set), also for the caption.
+config["campaign"]["group_by"] = group_column(CAMPAIGN, config["campaign"]["group_by"])
 # A change to a row reruns its batch only (the films, in the table's order, cut in batches).
 CAMPAIGN_BATCHES = batches(list(CAMPAIGN_FILMS), config["campaign"]["batch_size"])
 CAMPAIGN_SYNTHETIC = {Path(f.path).name: f for f in CAMPAIGN if f.synthetic}
@@ -90,7 +92,7 @@ rule campaign:
     params:
         films={name: asdict(film) for name, film in CAMPAIGN_FILMS.items()},
         bad_rows=CAMPAIGN_BAD_ROWS,
-        group_by=group_column(CAMPAIGN, config["campaign"]["group_by"]),
+        group_by=config["campaign"]["group_by"],
         table=config["campaign"]["table"],
         dpi=config["style"]["dpi"],
     script:

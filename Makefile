@@ -28,7 +28,7 @@ CORES ?= all
 READ_CONFIG = $(BIN)/python -c 'import sys, yaml; sys.excepthook = lambda t, e, tb: print(f"{sys.argv[1]}: {e}", file=sys.stderr); yaml.safe_load(open(sys.argv[1]))'
 SNAKEMAKE = $(if $(CONFIGFILE),$(READ_CONFIG) $(CONFIGFILE) && )$(BIN)/snakemake$(if $(CONFIGFILE), --configfile $(CONFIGFILE))
 
-.PHONY: all setup test lint bench mutants lock clean notebooks report readme-figure docs \
+.PHONY: all setup test test-slow lint bench mutants lock clean notebooks report readme-figure docs \
 	cluster-test
 
 # The HTML report is rewritten only when a file it is made from is newer than it (an output
@@ -84,6 +84,10 @@ $(DOCS_STAMP): $(BUILD_STAMP)
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -n 2
+
+# The tests marked slow (each a dry run of the whole workflow or a Jupyter kernel): run by CI.
+test-slow: $(STAMP)
+	$(BIN)/python -m pytest -n 2 -m slow
 
 # The documentation site from docs/ (guides and the API reference), offline; a warning fails it.
 docs: $(DOCS_STAMP)

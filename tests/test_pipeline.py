@@ -75,6 +75,7 @@ def test_no_output_of_the_build_is_a_notebook(clean_build: Path) -> None:
     assert not list(clean_build.rglob("*.ipynb"))
 
 
+@pytest.mark.slow  # two Jupyter kernels; CI also makes every notebook
 def test_a_script_as_a_notebook_writes_what_its_job_wrote(copy: Path) -> None:
     """make notebooks: the same script, the job's inputs and params, its outputs moved under
     results/notebooks/<script>/, byte for byte those of the build; run again by itself, the
@@ -186,7 +187,22 @@ EDITS = {
 }
 
 
-@pytest.mark.parametrize("what", EDITS)
+# In the default run: the package (every job), a parameter (one figure and what reads it), a
+# row of the campaign (its batch); the other edits run with -m slow (CI), each a dry run of
+# the whole workflow.
+SLOW_EDITS = {
+    "editor files in the package",
+    "a script",
+    "the style",
+    "a caption",
+    "a label of the campaign",
+    "the same values in another order",
+}
+
+
+@pytest.mark.parametrize(
+    "what", [pytest.param(w, marks=[pytest.mark.slow] * (w in SLOW_EDITS)) for w in EDITS]
+)
 def test_a_change_reruns_exactly_the_jobs_it_touches(copy: Path, what: str) -> None:
     edit, expected = EDITS[what]
     edit(copy)

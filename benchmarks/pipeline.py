@@ -20,14 +20,15 @@ machine, since other processes stretch wall times. ``--only ROW ...`` measures s
 alternating with this one, so that both see the same load.
 
 Run ``python benchmarks/pipeline.py`` (``--repeat``, ``--cores``, ``--only``). The result is
-merged into ``results/benchmarks.json`` under the key ``pipeline`` (other keys are kept),
-and the table of the benchmarks guide (docs/guides/benchmarks.md, between its markers)
-is rewritten with the figures of this run.
+merged into ``results/benchmarks.json`` under the key ``pipeline`` (other keys, and the rows
+not measured by this run, are kept), and the table of the benchmarks guide
+(docs/guides/benchmarks.md, between its markers) is rewritten with its figures.
 """
 
 from __future__ import annotations
 
 import argparse
+import json
 import os
 import platform
 import resource
@@ -171,7 +172,8 @@ def summary(runs: list[dict[str, Any]]) -> dict[str, Any]:
 def guide_table(result: dict[str, Any]) -> str:
     """The table of the guide: each row measured, its runs, its target."""
     lines = [
-        f"Measured with `{result['command']}` on {result['cpu_count']} cores "
+        f"Measured with {', '.join(f'`{c}`' for c in result['commands'])} on "
+        f"{result['cpu_count']} cores "
         f"({result['machine']}), under the load of other processes (a load average of "
         f"{result['load_average_1min']['min']}-{result['load_average_1min']['max']} over the "
         "runs); seconds of wall time, each run, and the median:",
@@ -241,8 +243,20 @@ def main(argv: Sequence[str] | None = None) -> int:
                 loads.append(os.getloadavg()[0])
                 run |= step(tree, args.cores)
             runs[name].append(run)
+    out = ROOT / args.out  # an absolute --out replaces ROOT
+    command = shlex.join(["python", "benchmarks/pipeline.py", *argv])
+    previous = json.loads(out.read_text()).get("pipeline", {}) if out.exists() else {}
+    if previous.get("runs") and not args.compare:  # the rows not measured now are kept
+        measured = {key for run in runs["this"] for key in run}
+        kept = [{k: v for k, v in run.items() if k not in measured} for run in previous["runs"]]
+        runs["this"] = [
+            (kept[i] if i < len(kept) else {}) | (runs["this"][i] if i < len(runs["this"]) else {})
+            for i in range(max(len(kept), len(runs["this"])))
+        ]
+        loads += list(previous.get("load_average_1min", {}).values())
+    commands = [*dict.fromkeys([*previous.get("commands", []), command])]
     result: dict[str, Any] = {
-        "command": shlex.join(["python", "benchmarks/pipeline.py", *argv]),
+        "commands": commands if previous.get("runs") and not args.compare else [command],
         "cores": args.cores,
         "cpu_count": os.cpu_count(),
         "machine": f"{platform.system()} {platform.machine()}",
@@ -257,7 +271,6 @@ def main(argv: Sequence[str] | None = None) -> int:
                 f"{name[:-2]:20s} min {result[name]['min']:7.2f} s, median "
                 f"{result[name]['median']:7.2f} s (target <= {ROWS[name][2]} s)"
             )
-    out = ROOT / args.out  # an absolute --out replaces ROOT
     merge_results(out, {"pipeline": result})
     if not args.no_guide:
         write_guide(result)

@@ -88,7 +88,7 @@ def test_the_pipeline_benchmark_writes_every_row_between_the_guides_markers(
     pipeline = _load("pipeline")
     runs = [{name: 1.0 + i for name in pipeline.ROWS} | {"setup_s": 2.0, "build_s": 3.0}
             for i in range(3)]  # fmt: skip
-    result = {"command": "python benchmarks/pipeline.py", "cpu_count": 2, "machine": "m",
+    result = {"commands": ["python benchmarks/pipeline.py"], "cpu_count": 2, "machine": "m",
               "load_average_1min": {"min": 1.0, "max": 2.0}} | pipeline.summary(runs)  # fmt: skip
     guide = tmp_path / "guide.md"
     guide.write_text(f"before\n{pipeline.BEGIN}\nold\n{pipeline.END}\nafter\n")

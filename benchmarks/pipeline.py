@@ -176,17 +176,20 @@ def guide_table(result: dict[str, Any]) -> str:
         f"{result['cpu_count']} cores "
         f"({result['machine']}), under the load of other processes (a load average of "
         f"{result['load_average_1min']['min']}-{result['load_average_1min']['max']} over the "
-        "runs); seconds of wall time, each run, and the median:",
+        "runs); seconds of wall time, each run, the median, and the median CPU time of the "
+        "processes (which the load stretches less):",
         "",
-        "| what | command | runs | median | target |",
-        "|---|---|---|---|---|",
+        "| what | command | runs | median | CPU | target |",
+        "|---|---|---|---|---|---|",
     ]
     for name, (what, command, target) in ROWS.items():
         if name not in result:
             continue
         runs = ", ".join(f"{run[name]:g}" for run in result["runs"] if name in run)
+        cpu = result.get(f"{name[:-2]}_cpu_s", {}).get("median")
         lines.append(
-            f"| {what} | `{command}` | {runs} | {result[name]['median']:g} s | {target:g} s |"
+            f"| {what} | `{command}` | {runs} | {result[name]['median']:g} s | "
+            f"{'' if cpu is None else f'{cpu:g} s'} | {target:g} s |"
         )
     if "setup_s" in result:
         lines += [
@@ -199,7 +202,8 @@ def guide_table(result: dict[str, Any]) -> str:
         lines += [
             "",
             f"A Snakefile of one rule with nothing to do, beside it: "
-            f"{result['bare_noop_s']['median']:g} s (median).",
+            f"{result['bare_noop_s']['median']:g} s ({result['bare_noop_cpu_s']['median']:g} s "
+            "of CPU; medians).",
         ]
     return "\n".join(lines)
 
@@ -224,7 +228,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument("--compare", type=Path, help="another checkout, measured alternately")
     parser.add_argument("--out", default="results/benchmarks.json", help="JSON file to update")
     parser.add_argument("--no-guide", action="store_true", help="leave the guide as it is")
+    parser.add_argument("--guide-only", action="store_true", help="the guide from --out, only")
     args = parser.parse_args(argv)
+    if args.guide_only:
+        write_guide(json.loads((ROOT / args.out).read_text())["pipeline"])
+        return 0
     rows = args.only or list(ROWS)
     steps: list[Callable[[Path, int], dict[str, Any]]] = []
     if set(rows) & set(WORKFLOW_ROWS):

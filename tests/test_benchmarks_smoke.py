@@ -86,8 +86,9 @@ def test_the_pipeline_benchmark_writes_every_row_between_the_guides_markers(
     tmp_path: Path,
 ) -> None:
     pipeline = _load("pipeline")
-    runs = [{name: 1.0 + i for name in pipeline.ROWS} | {"setup_s": 2.0, "build_s": 3.0}
-            for i in range(3)]  # fmt: skip
+    runs = [{name: 1.0 + i for name in pipeline.ROWS}
+            | {f"{name[:-2]}_cpu_s": 2.0 + 2 * i for name in pipeline.ROWS}
+            | {"setup_s": 2.0, "build_s": 3.0} for i in range(3)]  # fmt: skip
     result = {"commands": ["python benchmarks/pipeline.py"], "cpu_count": 2, "machine": "m",
               "load_average_1min": {"min": 1.0, "max": 2.0}} | pipeline.summary(runs)  # fmt: skip
     guide = tmp_path / "guide.md"
@@ -98,5 +99,5 @@ def test_the_pipeline_benchmark_writes_every_row_between_the_guides_markers(
     assert text.endswith(f"{pipeline.END}\nafter\n")
     assert "old" not in text
     for what, command, target in pipeline.ROWS.values():
-        assert f"| {what} | `{command}` | 1, 2, 3 | 2 s | {target:g} s |" in text
+        assert f"| {what} | `{command}` | 1, 2, 3 | 2 s | 4 s | {target:g} s |" in text
     assert pipeline.BEGIN in pipeline.GUIDE.read_text()

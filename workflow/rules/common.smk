@@ -1,12 +1,14 @@
 # The configuration, checked, and what the rules share: the figures, the package's files,
 # the inputs of a job that runs a script of scripts/ (through Snakemake's script:).
 import json
+import os
 from pathlib import Path
 
 import turntable
 import turntable.config
 import yaml
 from snakemake.exceptions import WorkflowError
+from snakemake.io import apply_wildcards
 from turntable.provenance import git_state
 
 ROOT = Path(workflow.basedir).parent
@@ -61,3 +63,20 @@ STYLE = ["scripts/_style/__init__.py", "scripts/_style/turntable.mplstyle"]
 def script_inputs(name, style=()):
     """Inputs of the job that runs scripts/<name>.py: the script and the code it runs."""
     return {"script": f"scripts/{name}.py", "code": [*PACKAGE, *style]}
+
+
+def moved_outputs(job, folder):
+    """Params function of a notebook (notebooks.smk): the outputs of `job` under `folder`."""
+
+    def outputs(wildcards):
+        def move(path):
+            return os.path.join(
+                apply_wildcards(folder, wildcards), apply_wildcards(path, wildcards)
+            )
+
+        return {
+            key: list(map(move, value)) if isinstance(value, list) else move(value)
+            for key, value in job.output.items()
+        }
+
+    return outputs

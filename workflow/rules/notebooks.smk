@@ -3,34 +3,11 @@
 # Jupyter notebook (workflow/scripts/as_notebook.py), with the job's inputs and params, and
 # writes results/notebooks/<script>.ipynb. What the script writes in the notebook goes
 # under results/notebooks/<script>/ (the paths of the job's outputs), not over the build.
-import os
-
-from snakemake.io import apply_wildcards
-
 NOTEBOOKS = []
 
-
-def moved_outputs(job, folder):
-    """Params function: the outputs of `job`, under `folder`, as the script should see them."""
-
-    def outputs(wildcards):
-        def move(path):
-            return os.path.join(
-                apply_wildcards(folder, wildcards), apply_wildcards(path, wildcards)
-            )
-
-        return {
-            key: list(map(move, value)) if isinstance(value, list) else move(value)
-            for key, value in job.output.items()
-        }
-
-    return outputs
-
-
 for _job in [r for r in list(workflow.rules) if "script" in r.input.keys()]:
-    _stem = Path(_job.input.script).stem + "".join(
-        f"_{{{w}}}" for w in _job.wildcard_names
-    )
+    _wildcards = "".join(f"_{{{w}}}" for w in _job.wildcard_names)
+    _stem = f"{Path(_job.input.script).stem}{_wildcards}"
     NOTEBOOKS += dict.fromkeys(expand(f"results/notebooks/{_stem}.ipynb", k=STUDY_K))
 
     rule:

@@ -7,18 +7,20 @@ PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
 # Two stages of .venv: what the build needs (make), then the tools of the tests and of
-# development (make setup, make test, make lint). Without byte-compiling every installed
-# file (7000 files, 25 s of CPU): Python compiles, and caches, a module when it is first
-# imported (the first build writes the caches of the 2300 it imports, about 15 s of CPU). An
-# environment with PYTHONDONTWRITEBYTECODE set would keep Python from writing them, and every
-# run would compile every module again (a no-op snakemake 2.4 s instead of 1 s): make does
-# not pass it on.
+# development (make setup, make test, make lint). pip installs uv (pinned in constraints.txt)
+# into .venv, and uv the pinned set: seconds, not minutes. Without byte-compiling every
+# installed file (7000 files, 25 s of CPU; uv does not unless asked): Python compiles, and
+# caches, a module when it is first imported (the first build writes the caches of the 2300
+# it imports, about 15 s of CPU). An environment with PYTHONDONTWRITEBYTECODE set would keep
+# Python from writing them, and every run would compile every module again (a no-op
+# snakemake 2.4 s instead of 1 s): make does not pass it on.
 unexport PYTHONDONTWRITEBYTECODE
 BUILD_STAMP := $(VENV)/.installed-build
 STAMP := $(VENV)/.installed
 DOCS_STAMP := $(VENV)/.installed-docs
-PIP_INSTALL := PIP_CONSTRAINT=constraints.txt $(BIN)/python -m pip install --quiet \
-	--disable-pip-version-check --no-compile
+NOTEBOOKS_STAMP := $(VENV)/.installed-notebooks
+UV := $(BIN)/uv
+UV_INSTALL := $(UV) pip install --quiet --python $(BIN)/python --constraints constraints.txt
 CORES ?= all
 
 # With CONFIGFILE, the file is read first: Snakemake answers a missing file with a traceback
@@ -26,7 +28,7 @@ CORES ?= all
 READ_CONFIG = $(BIN)/python -c 'import sys, yaml; sys.excepthook = lambda t, e, tb: print(f"{sys.argv[1]}: {e}", file=sys.stderr); yaml.safe_load(open(sys.argv[1]))'
 SNAKEMAKE = $(if $(CONFIGFILE),$(READ_CONFIG) $(CONFIGFILE) && )$(BIN)/snakemake$(if $(CONFIGFILE), --configfile $(CONFIGFILE))
 
-.PHONY: all setup test lint bench mutants lock clean notebooks report readme-figure docs \
+.PHONY: all setup test test-slow lint bench mutants lock clean notebooks report readme-figure docs \
 	cluster-test
 
 # The HTML report is rewritten only when a file it is made from is newer than it (an output
@@ -42,9 +44,9 @@ all: $(BUILD_STAMP)
 	@$(REPORT)
 	@$(BIN)/python tools/build_summary.py
 
-# Every script of scripts/ executed as a notebook with its outputs: results/notebooks/ (each
-# written by the job that runs the script; also part of make).
-notebooks: $(BUILD_STAMP)
+# Every script of scripts/ executed as a notebook with its outputs: results/notebooks/ (not
+# part of make, whose outputs depend on no notebook).
+notebooks: $(NOTEBOOKS_STAMP)
 	$(SNAKEMAKE) --cores $(CORES) notebooks
 
 # Self-contained HTML page with every figure and its caption (needs the built figures).
@@ -59,21 +61,33 @@ readme-figure: $(BUILD_STAMP)
 
 setup: $(STAMP) $(DOCS_STAMP)
 
-$(BUILD_STAMP): pyproject.toml constraints.txt
+$(UV): constraints.txt
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(PIP_INSTALL) -e ".[workflow,notebooks,video]"
+	$(BIN)/python -m pip install --quiet --disable-pip-version-check --constraint constraints.txt uv
+	touch $(UV)
+
+$(BUILD_STAMP): pyproject.toml constraints.txt $(UV)
+	$(UV_INSTALL) -e ".[workflow,video]"
 	touch $(BUILD_STAMP)
 
+$(NOTEBOOKS_STAMP): $(BUILD_STAMP)
+	$(UV_INSTALL) -e ".[workflow,notebooks,video]"
+	touch $(NOTEBOOKS_STAMP)
+
 $(STAMP): $(BUILD_STAMP)
-	$(PIP_INSTALL) -e ".[workflow,test,dev,notebooks,video]"
+	$(UV_INSTALL) -e ".[workflow,test,dev,notebooks,video]"
 	touch $(STAMP)
 
 $(DOCS_STAMP): $(BUILD_STAMP)
-	$(PIP_INSTALL) -e ".[workflow,notebooks,docs]"
+	$(UV_INSTALL) -e ".[workflow,docs]"
 	touch $(DOCS_STAMP)
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -n 2
+
+# The tests marked slow (each a dry run of the whole workflow or a Jupyter kernel): run by CI.
+test-slow: $(STAMP)
+	$(BIN)/python -m pytest -n 2 -m slow
 
 # The documentation site from docs/ (guides and the API reference), offline; a warning fails it.
 # Built beside the site, which it replaces only when it builds: no page outlives its source.
@@ -96,7 +110,7 @@ mutants: $(STAMP)
 
 # benchmarks/video.py also renders with MuJoCo (the extra [bench]; offscreen through EGL).
 bench: $(STAMP)
-	$(PIP_INSTALL) -e ".[bench]"
+	$(UV_INSTALL) -e ".[bench]"
 	$(BIN)/python benchmarks/run.py
 	$(BIN)/python benchmarks/pipeline.py
 
@@ -105,14 +119,14 @@ bench: $(STAMP)
 cluster-test: $(STAMP)
 	command -v slurmctld >/dev/null || { apt-get install -y -q slurm-wlm munge || \
 		{ apt-get update -q && apt-get install -y -q slurm-wlm munge; }; }
-	$(PIP_INSTALL) -e ".[slurm]"
+	$(UV_INSTALL) -e ".[slurm]"
 	$(BIN)/python tools/cluster_test.py
 
 # Re-resolve the newest versions into constraints.txt (needs the network).
 lock:
 	rm -rf .lockvenv && $(PYTHON) -m venv .lockvenv
-	.lockvenv/bin/pip install --quiet ".[workflow,test,dev,notebooks,docs,slurm,video,bench]"
-	{ echo "# Exact versions of every package the project installs (pip constraints)."; \
+	.lockvenv/bin/pip install --quiet uv ".[workflow,test,dev,notebooks,docs,slurm,video,bench]"
+	{ echo "# Exact versions of every package the project installs (pip and uv constraints)."; \
 	  echo "# Regenerate: make lock"; \
 	  .lockvenv/bin/pip freeze --all --exclude-editable | grep -v -e '^turntable' -e '^pip=='; } > constraints.txt
 	rm -rf .lockvenv

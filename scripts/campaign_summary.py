@@ -5,8 +5,8 @@ Writes results/campaign/summary.csv (turntable.campaign.SUMMARY_COLUMNS, then th
 labels): the selected model's coefficient with its standard error, whether the selection
 is decisive, the warnings; a film turntable fit refused, or a bad row of the table, has the
 status failed and the reason. The figure shows mu0 (films that slip) and delta (films that
-roll) with two standard errors, grouped by the label group_by; hollow markers: no decisive
-selection; a cross: the true value of a SYNTHETIC film.
+roll) with two standard errors, grouped by the label group_by (none if empty); hollow
+markers: no decisive selection; a cross: the true value of a SYNTHETIC film.
 """
 
 # %%
@@ -22,8 +22,9 @@ from turntable.campaign import summary_row, write_summary
 setup(snakemake)
 p = snakemake.params
 rows = [
-    summary_row(p.films[Path(path).stem], json.loads(Path(path).read_text()))
-    for path in snakemake.input.fits
+    summary_row(p.films[name], result)
+    for path in snakemake.input.fits  # a batch of films each
+    for name, result in json.loads(Path(path).read_text()).items()
 ]
 rows += [{"row": b["row"], "file": b["file"], "status": "failed", "warnings": b["error"]}
          for b in p.bad_rows]  # fmt: skip
@@ -57,7 +58,7 @@ for ax, name in zip(axes, names.values(), strict=True):
     ax.margins(x=0.15, y=0.1)
     ax.grid(axis="x", alpha=0.3)
 axes[0].set_yticks(range(len(ticks)), ticks, fontsize=6)
-for i, group in enumerate(groups):
+for i, group in enumerate(groups if p.group_by else []):
     axes[1].plot([], [], "o", color=f"C{i}", label=f"{p.group_by} = {group}")
 if not all(r["decisive"] for r in fitted):
     axes[1].plot([], [], "o", color="grey", mfc="white", label="selection not decisive")

@@ -80,3 +80,24 @@ def test_results_are_merged_into_the_shared_file(common: ModuleType, tmp_path: P
     assert record["packages"]["numpy"] == np.__version__
     assert set(record["packages"]) >= {"scipy", "mpmath", "sympy", "matplotlib", "snakemake"}
     assert [p.name for p in tmp_path.iterdir()] == ["benchmarks.json"]
+
+
+def test_the_pipeline_benchmark_writes_every_row_between_the_guides_markers(
+    tmp_path: Path,
+) -> None:
+    pipeline = _load("pipeline")
+    runs = [{name: 1.0 + i for name in pipeline.ROWS}
+            | {f"{name[:-2]}_cpu_s": 2.0 + 2 * i for name in pipeline.ROWS}
+            | {"setup_s": 2.0, "build_s": 3.0} for i in range(3)]  # fmt: skip
+    result = {"commands": ["python benchmarks/pipeline.py"], "cpu_count": 2, "machine": "m",
+              "load_average_1min": {"min": 1.0, "max": 2.0}} | pipeline.summary(runs)  # fmt: skip
+    guide = tmp_path / "guide.md"
+    guide.write_text(f"before\n{pipeline.BEGIN}\nold\n{pipeline.END}\nafter\n")
+    pipeline.write_guide(result, guide)
+    text = guide.read_text()
+    assert text.startswith(f"before\n{pipeline.BEGIN}\n")
+    assert text.endswith(f"{pipeline.END}\nafter\n")
+    assert "old" not in text
+    for what, command, target in pipeline.ROWS.values():
+        assert f"| {what} | `{command}` | 1, 2, 3 | 2 s | 4 s | {target:g} s |" in text
+    assert pipeline.BEGIN in pipeline.GUIDE.read_text()

@@ -15,7 +15,9 @@ import ci_build
 from turntable.campaign import (
     CampaignError,
     Film,
+    batches,
     fit_film,
+    group_column,
     read_table,
     simulate,
     simulation,
@@ -101,14 +103,36 @@ def test_a_film_that_turntable_fit_refuses_gives_its_one_line(tmp_path):
                    "warnings": result["error"]}  # fmt: skip
 
 
+def test_a_table_without_a_surface_column_is_grouped_by_its_first_label(tmp_path):
+    (tmp_path / "a.csv").write_text("t,x,y\n0,0,0\n")
+    head = "file,radius_m,k,rpm,platter_radius_m"
+    (tmp_path / "t.csv").write_text(f"{head},ball,date\na.csv,0.005,0.4,33,,steel,may\n")
+    films, bad = read_table(tmp_path / "t.csv")
+    assert (len(films), bad) == (1, [])
+    assert group_column(films, "") == "ball"
+    assert group_column(films, "date") == "date"
+    (tmp_path / "bare.csv").write_text(f"{head}\na.csv,0.005,0.4,33,\n")
+    assert group_column(read_table(tmp_path / "bare.csv")[0], "") == ""  # not grouped
+    with pytest.raises(CampaignError, match="no column surface"):
+        read_table(tmp_path / "t.csv", group_by="surface")
+
+
+def test_films_are_cut_in_batches_in_the_tables_order():
+    names = [f"f{i}" for i in range(7)]
+    assert batches(names, 3) == {"1": names[:3], "2": names[3:6], "3": names[6:]}
+    assert batches(names, 7) == {"1": names}
+    assert batches([], 3) == {}
+
+
 @pytest.fixture(scope="session")
 def clean_build(tmp_path_factory: pytest.TempPathFactory, worker_id: str) -> Path:
     return ci_build.clean_build(tmp_path_factory, worker_id)
 
 
 def test_the_build_fits_every_good_film_and_names_the_others(clean_build, tmp_path):
-    """Two films of the build, a bad row, a file turntable fit refuses: snakemake succeeds,
-    the summary has one row each, and the summary of make names the two failures."""
+    """Two films of the build, a bad row, a file turntable fit refuses, in a table without a
+    column surface: snakemake succeeds, the summary has one row each, and the summary of
+    make names the two failures."""
     copy = Path(shutil.copytree(clean_build, tmp_path / "copy", symlinks=True))
     with open(copy / "results/campaign/summary.csv") as f:
         built = list(csv.DictReader(f))
@@ -117,7 +141,9 @@ def test_the_build_fits_every_good_film_and_names_the_others(clean_build, tmp_pa
     good = ["../" + line for line in (copy / "config/campaign.csv").read_text().splitlines()[1:3]]
     rows = [*good, "broken.csv,0.005,0.4,33,,felt,steel,,,,", "gone.csv,0.005,0.4,33,,felt,,,,,"]
     header = (copy / "config/campaign.csv").read_text().splitlines()[0]
-    (copy / "config/mine/table.csv").write_text("\n".join([header, *rows]) + "\n")
+    assert header.split(",")[5] == "surface"  # a table without it: grouped by ball
+    lines = [",".join(v for i, v in enumerate(r.split(",")) if i != 5) for r in [header, *rows]]
+    (copy / "config/mine/table.csv").write_text("\n".join(lines) + "\n")
     config = copy / "config/config.yaml"
     config.write_text(config.read_text() + "campaign: {table: config/mine/table.csv}\n")
     proc = ci_build.snakemake(copy, "--cores", "2", "campaign")

@@ -75,6 +75,11 @@ def test_the_defaults_are_a_valid_configuration(defaults: dict) -> None:
         pytest.param(
             {"animation": {"k": float("nan")}}, "animation.k: nan is not of type 'number'", id="nan"
         ),
+        pytest.param(
+            {"campaign": {"batch_size": 0}},
+            "campaign.batch_size: 0 is less than the minimum of 1",
+            id="batch-size",
+        ),
     ],
 )
 def test_a_schema_mistake_is_one_line_with_the_key_and_what_is_expected(

@@ -39,7 +39,7 @@ def test_package_requires_only_the_runtime_dependencies() -> None:
     project = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["project"]
     assert {_requirement_name(r) for r in project["dependencies"]} == RUNTIME
     workflow = {_requirement_name(r) for r in project["optional-dependencies"]["workflow"]}
-    assert {"matplotlib", "snakemake", "jupytext", "typst", "pillow"} <= workflow
+    assert {"matplotlib", "snakemake", "typst", "pillow"} <= workflow
 
 
 def test_package_imports_without_the_workflow_tools() -> None:

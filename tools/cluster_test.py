@@ -3,8 +3,10 @@
 1. Starts munged, slurmctld and slurmd (Debian's slurm-wlm) with every file in a temporary
    directory (``SLURM_CONF``), no accounting database.
 2. Builds ``TARGETS`` twice, in two copies of the sources: locally (``--cores``) and
-   through ``profiles/slurm``, where every job goes through ``sbatch``. Reads each job id
-   back from SLURM (``scontrol show job``: COMPLETED) and compares the outputs byte for byte.
+   through ``profiles/slurm``, where every job goes through ``sbatch``, one CPU each (the
+   campaign's films in batches of ``campaign.batch_size``, one job per batch). Reads each
+   job id back from SLURM (``scontrol show job``: COMPLETED) and compares the outputs byte
+   for byte.
 3. Removes one result of the study, cancels the job that rebuilds it with ``scancel``,
    checks that Snakemake reports the job as failed, and that a second run finishes with the
    same bytes.
@@ -192,6 +194,21 @@ def check_completed(log: str) -> list[str]:
     return ids
 
 
+def check_batches(log: str) -> int:
+    """The jobs of rule campaign_fit in `log`: one per batch of the default table."""
+    from turntable.campaign import batches, read_table
+    from turntable.config import validate
+
+    config: dict = {}
+    validate(config, ROOT / "workflow" / "schemas" / "config.schema.yaml")
+    films, _ = read_table(ROOT / config["campaign"]["table"], results=str(ROOT / "results"))
+    expected = len(batches([f.name for f in films], config["campaign"]["batch_size"]))
+    found = len(re.findall(r"^rule campaign_fit:", log, re.MULTILINE))
+    if found != expected or expected >= len(films):
+        fail(f"{found} jobs of campaign_fit for {len(films)} films, not {expected}", log)
+    return found
+
+
 def cancel_one_job(cluster: Path) -> None:
     """Remove one output, cancel the job that rebuilds it; then build it again."""
     lost = sorted((cluster / "results" / "study").glob("k_*.json"))[0]
@@ -233,8 +250,10 @@ def main() -> None:
         cluster = copy_sources(work / "cluster")
         build = snakemake(cluster, *TARGETS, *SLURM_FLAGS)
         finish(snakemake(local, *TARGETS, "--cores", str(os.cpu_count())), "the local build")
-        ids = check_completed(finish(build, "the build through profiles/slurm"))
+        log = finish(build, "the build through profiles/slurm")
+        ids = check_completed(log)
         say(f"{len(ids)} jobs through sbatch, COMPLETED in SLURM: ids {', '.join(ids)}")
+        say(f"the campaign's films fitted in {check_batches(log)} batch jobs")
         say(f"outputs byte-identical to a local build: {same_bytes(local, cluster)} files")
         cancel_one_job(cluster)
         say(f"outputs byte-identical again: {same_bytes(local, cluster)} files")

@@ -8,8 +8,9 @@ workflow writes itself from the labels ``true_model``, ``true_value`` and ``seed
 row is reported with its number and what is wrong, and the other films are fitted all the
 same.
 
-``python -m turntable.campaign fit ARGS_JSON OUT.json`` fits one film (`Film.fit_args`) and
-writes the result of ``turntable fit``, or the one line that refused the film;
+``python -m turntable.campaign fit ARGS_JSON OUT.json`` fits a batch of films (``{name:
+Film.fit_args()}``) in one process and writes ``{name: the result of turntable fit, or the
+one line that refused the film}``;
 ``python -m turntable.campaign simulate SPEC_JSON OUT [TRUTH.csv]`` writes a synthetic film
 or video.
 """
@@ -158,6 +159,23 @@ def fit_film(args: list[str]) -> dict[str, Any]:
     return json.loads(out.getvalue())
 
 
+def batches(names: list[str], size: int) -> dict[str, list[str]]:
+    """The films `names`, in the table's order, in batches of `size`: ``{"1": [...], ...}``.
+
+    >>> batches(["a", "b", "c"], 2)
+    {'1': ['a', 'b'], '2': ['c']}
+    """
+    return {str(i // size + 1): names[i : i + size] for i in range(0, len(names), size)}
+
+
+def group_column(films: list[Film], group_by: str) -> str:
+    """The label that groups the films in the figure: `group_by` if set, else the table's
+    first label column, else none (``""``)."""
+    if group_by or not films:
+        return group_by
+    return next(iter(films[0].labels), "")
+
+
 def summary_row(film: dict[str, Any], result: dict[str, Any]) -> dict[str, Any]:
     """One row of the summary: the selected model's coefficient, or why there is none."""
     row = {"film": film["name"], "row": film["row"], "file": film["path"], **film["labels"]}
@@ -252,7 +270,7 @@ def main(argv: list[str] | None = None) -> int:
     if command == "simulate":
         simulate(json.loads(spec), *out)
     else:
-        _write_json(fit_film(json.loads(spec)), *out)
+        _write_json({name: fit_film(args) for name, args in json.loads(spec).items()}, *out)
     return 0
 
 

@@ -1,12 +1,18 @@
-# A campaign of films (section campaign): one job per film of the table fits it with
-# turntable fit (a film it refuses is recorded, not fatal); one job gathers the fits into
-# results/campaign/summary.csv and a figure. The table's SYNTHETIC films are written here,
-# one job each.
+# A campaign of films (section campaign): one job per batch of batch_size films of the table
+# fits them with turntable fit, in one process (a film it refuses is recorded, not fatal);
+# one job gathers the fits into results/campaign/summary.csv and a figure. The table's
+# SYNTHETIC films are written here, one job each.
 import json
 import re
 from dataclasses import asdict
 
-from turntable.campaign import CampaignError, read_table, simulation
+from turntable.campaign import (
+    CampaignError,
+    batches,
+    group_column,
+    read_table,
+    simulation,
+)
 
 try:
     CAMPAIGN, CAMPAIGN_BAD_ROWS = read_table(
@@ -15,6 +21,10 @@ try:
 except CampaignError as exc:
     raise WorkflowError(f"campaign: {exc}") from None
 CAMPAIGN_FILMS = {film.name: film for film in CAMPAIGN}
+# The label that groups the films (the first label column unless set), also for the caption.
+config["campaign"]["group_by"] = group_column(CAMPAIGN, config["campaign"]["group_by"])
+# A change to a row reruns its batch only (the films, in the table's order, cut in batches).
+CAMPAIGN_BATCHES = batches(list(CAMPAIGN_FILMS), config["campaign"]["batch_size"])
 CAMPAIGN_SYNTHETIC = {Path(f.path).name: f for f in CAMPAIGN if f.synthetic}
 CAMPAIGN_OUTPUTS = expand("results/campaign/summary.{ext}", ext=["csv", "pdf", "png"])
 
@@ -42,20 +52,20 @@ rule campaign_film:
 
 rule campaign_fit:
     input:
-        film=lambda w: CAMPAIGN_FILMS[w.film].path,
+        films=lambda w: [CAMPAIGN_FILMS[f].path for f in CAMPAIGN_BATCHES[w.batch]],
         code=PACKAGE,
     output:
-        ensure("results/campaign/fits/{film}.json", non_empty=True),
+        ensure("results/campaign/fits/batch_{batch}.json", non_empty=True),
     log:
-        "logs/campaign/{film}.log",
+        "logs/campaign/batch_{batch}.log",
     wildcard_constraints:
-        film="|".join(CAMPAIGN_FILMS) or "^$",
-    group:
-        "campaign"
+        batch="|".join(CAMPAIGN_BATCHES) or "^$",
     conda:
         "../envs/turntable.yaml"
     params:
-        args=lambda w: json.dumps(CAMPAIGN_FILMS[w.film].fit_args()),
+        args=lambda w: json.dumps(
+            {f: CAMPAIGN_FILMS[f].fit_args() for f in CAMPAIGN_BATCHES[w.batch]}
+        ),
     shell:
         "python -m turntable.campaign fit {params.args:q} {output:q} 2> {log:q}"
 
@@ -63,7 +73,7 @@ rule campaign_fit:
 rule campaign:
     input:
         **script_inputs("campaign_summary", STYLE),
-        fits=expand("results/campaign/fits/{film}.json", film=CAMPAIGN_FILMS),
+        fits=expand("results/campaign/fits/batch_{batch}.json", batch=CAMPAIGN_BATCHES),
     output:
         csv=ensure("results/campaign/summary.csv", non_empty=True),
         pdf=ensure("results/campaign/summary.pdf", non_empty=True),
@@ -75,7 +85,6 @@ rule campaign:
             ),
             non_empty=True,
         ),
-        notebook=notebook("campaign_summary"),
     log:
         "logs/campaign/summary.log",
     conda:
@@ -87,4 +96,4 @@ rule campaign:
         table=config["campaign"]["table"],
         dpi=config["style"]["dpi"],
     script:
-        "../scripts/as_notebook.py"
+        "../../scripts/campaign_summary.py"

@@ -8,7 +8,6 @@ rule claims:
     output:
         json=ensure("results/claims.json", non_empty=True),
         md=ensure("results/claims.md", non_empty=True),
-        notebook=notebook("claims_report"),
     log:
         "logs/claims.log",
     benchmark:
@@ -18,7 +17,7 @@ rule claims:
     params:
         claims=config["claims"],
     script:
-        "../scripts/as_notebook.py"
+        "../../scripts/claims_report.py"
 
 
 rule claims_table:

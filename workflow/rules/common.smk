@@ -1,12 +1,14 @@
 # The configuration, checked, and what the rules share: the figures, the package's files,
-# the inputs of a job that runs a script of scripts/ as a notebook.
+# the inputs of a job that runs a script of scripts/ (through Snakemake's script:).
 import json
+import os
 from pathlib import Path
 
 import turntable
 import turntable.config
 import yaml
 from snakemake.exceptions import WorkflowError
+from snakemake.io import apply_wildcards
 from turntable.provenance import git_state
 
 ROOT = Path(workflow.basedir).parent
@@ -63,6 +65,18 @@ def script_inputs(name, style=()):
     return {"script": f"scripts/{name}.py", "code": [*PACKAGE, *style]}
 
 
-def notebook(name):
-    """The notebook the job of scripts/<name>.py writes, with the outputs of its run."""
-    return ensure(f"results/notebooks/{name}.ipynb", non_empty=True)
+def moved_outputs(job, folder):
+    """Params function of a notebook (notebooks.smk): the outputs of `job` under `folder`."""
+
+    def outputs(wildcards):
+        def move(path):
+            return os.path.join(
+                apply_wildcards(folder, wildcards), apply_wildcards(path, wildcards)
+            )
+
+        return {
+            key: list(map(move, value)) if isinstance(value, list) else move(value)
+            for key, value in job.output.items()
+        }
+
+    return outputs

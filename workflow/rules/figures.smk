@@ -1,4 +1,4 @@
-# One rule per figure of workflow/figures.yaml: scripts/<name>.py, run as a notebook with the
+# One rule per figure of workflow/figures.yaml: scripts/<name>.py, run with the
 # section <name> of the configuration as its params, writes figures/<name>.{pdf,png}; its
 # caption is workflow/report/<name>.rst. What a figure reads beyond its own section:
 EXTRA = {
@@ -44,7 +44,6 @@ for name in FIGURES:
                 ),
                 non_empty=True,
             ),
-            notebook=notebook(name),
         log:
             f"logs/{name}.log",
         benchmark:
@@ -55,8 +54,9 @@ for name in FIGURES:
             **config.get(name, {}),
             **EXTRA.get(name, {}).get("params", {}),
             dpi=config["style"]["dpi"],
+            script=name,  # (a script: path is formatted when the job runs, after the loop)
         script:
-            "../scripts/as_notebook.py"
+            "../../scripts/{params.script}.py"
 
 
 rule figures:
@@ -77,7 +77,6 @@ rule animation:
             ),
             non_empty=True,
         ),
-        notebook=notebook("animation"),
     log:
         "logs/animation.log",
     benchmark:
@@ -87,7 +86,7 @@ rule animation:
     params:
         **config["animation"],
     script:
-        "../scripts/as_notebook.py"
+        "../../scripts/animation.py"
 
 
 # The pictures of README.md and of the documentation (docs/, committed): `make readme-figure`.

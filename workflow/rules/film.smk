@@ -26,7 +26,6 @@ rule synthetic_film:
     output:
         csv=[ensure(path, non_empty=True) for path in FILM_CSV],
         truth=ensure(FILM_TRUTH, non_empty=True),
-        notebook=notebook("synthetic_film"),
     log:
         "logs/synthetic_film.log",
     benchmark:
@@ -37,7 +36,7 @@ rule synthetic_film:
         film=config["film"],
         films=FILM_SPECS,
     script:
-        "../scripts/as_notebook.py"
+        "../../scripts/synthetic_film.py"
 
 
 rule fit_film:

@@ -18,7 +18,6 @@ rule paper:
         figures=expand("figures/{name}.pdf", name=ARTICLE_FIGURES),
     output:
         pdf=ensure("paper/paper.pdf", non_empty=True),
-        notebook=notebook("build_paper"),
     log:
         "logs/paper.log",
     benchmark:
@@ -32,4 +31,4 @@ rule paper:
         git_state=GIT_STATE,
         config_overrides=OVERRIDES,
     script:
-        "../scripts/as_notebook.py"
+        "../../scripts/build_paper.py"

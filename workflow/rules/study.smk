@@ -11,7 +11,6 @@ rule study_k:
         **script_inputs("study_k"),
     output:
         json=ensure("results/study/k_{k}.json", non_empty=True),
-        notebook=notebook("study_k_{k}"),
     log:
         "logs/study/k_{k}.log",
     benchmark:
@@ -23,7 +22,7 @@ rule study_k:
     params:
         **{key: value for key, value in config["study"].items() if key != "k"},
     script:
-        "../scripts/as_notebook.py"
+        "../../scripts/study_k.py"
 
 
 rule study:
@@ -41,7 +40,6 @@ rule study:
             ),
             non_empty=True,
         ),
-        notebook=notebook("study_summary"),
     log:
         "logs/study/summary.log",
     benchmark:
@@ -51,4 +49,4 @@ rule study:
     params:
         dpi=config["style"]["dpi"],
     script:
-        "../scripts/as_notebook.py"
+        "../../scripts/study_summary.py"

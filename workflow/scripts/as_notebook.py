@@ -1,19 +1,22 @@
-"""Run the job's script (input ``script``, a jupytext percent file) as a Jupyter notebook with
-nbclient, and save it with its outputs (output ``notebook``): the record of the run.
+"""Run a job's script (input ``script``, a jupytext percent file) as a Jupyter notebook with
+nbclient, and save it with its outputs (output ``notebook``): the record of a run.
 
-A first cell defines the job's ``snakemake`` object from plain values; a last one shows what
-the script wrote. Cell ids, kernel flags and no timings make two runs write the same bytes.
+A first cell defines the job's ``snakemake`` object from plain values, its outputs (params
+``outputs``) under results/notebooks/<name>/; a last one shows what the script wrote. Cell
+ids, kernel flags and no timings make two runs write the same bytes.
 """
 
 import os
 import pprint
+import shutil
+from pathlib import Path
 
 import jupytext
 import nbformat
 from nbclient import NotebookClient
 from nbclient.exceptions import CellExecutionError
 
-LEFT_OUT = {"script", "code", "notebook"}  # not read by the script
+LEFT_OUT = {"script", "code", "notebook", "outputs"}  # not read by the script
 
 
 def plain(items, files=True):
@@ -25,21 +28,34 @@ def plain(items, files=True):
         for k, v in items.items()
         if k not in LEFT_OUT
     }
+    return fromdict(named)
+
+
+def fromdict(named):
+    """`Namedlist(fromdict=...)` source of a dict."""
     text = pprint.pformat(named, width=70, sort_dicts=False).replace("\n", "\n" + " " * 17)
     return f"Namedlist(\n        fromdict={text},\n    )"
 
 
+FOLDER = os.path.splitext(snakemake.output.notebook)[0]
+outputs = snakemake.params.outputs
+shutil.rmtree(FOLDER, ignore_errors=True)
+for value in outputs.values():
+    for path in value if isinstance(value, list) else [value]:
+        Path(path).parent.mkdir(parents=True, exist_ok=True)
+RULE = snakemake.rule.removeprefix("notebook_")
 FIRST = f"""\
-# The `snakemake` object of rule {snakemake.rule}: run from the repository's root.
+# The `snakemake` object of rule {RULE}: run from the repository's root, its outputs moved
+# under {FOLDER}/.
 import sys
 from types import SimpleNamespace
 
 from snakemake.iocontainers import Namedlist
 
 snakemake = SimpleNamespace(
-    rule={snakemake.rule!r},
+    rule={RULE!r},
     input={plain(snakemake.input)},
-    output={plain(snakemake.output)},
+    output={fromdict(outputs)},
     log={plain(snakemake.log)},
     params={plain(snakemake.params, files=False)},
     wildcards={plain(snakemake.wildcards, files=False)},

@@ -548,6 +548,34 @@ MUTANTS = [
         FIT_TESTS,
     ),
     Mutant(
+        "fit-no-drift",
+        "the standard errors ignore errors that drift slowly (the slow part always none)",
+        (
+            (
+                "fit/parameters.py",
+                "return (w, s, a) if z > DRIFT_Z else (w, 0.0, a)",
+                "return (w, 0.0, a)",
+                1,
+            ),
+        ),
+        ("test_fit.py",),
+        "drifting",
+    ),
+    Mutant(
+        "fit-drift-not-absorbed",
+        "the slow part of the errors fitted as if the fit absorbed none of it",
+        (
+            (
+                "fit/parameters.py",
+                "- lag_sums(cross + np.conj(cross) - projected)",
+                "- 0.0 * lag_sums(cross + np.conj(cross) - projected)",
+                1,
+            ),
+        ),
+        ("test_fit.py",),
+        "drifting",
+    ),
+    Mutant(
         "fit-clock",
         "the fit forgets Omega: tau = t - t0 instead of Omega (t - t0)",
         (

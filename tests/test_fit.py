@@ -571,6 +571,16 @@ def test_correlated_noise_gets_wider_standard_errors_that_cover(model: str) -> N
     assert np.mean(z < 2) >= 0.85
 
 
+@pytest.mark.parametrize("n", [1, 2, 7, 400])
+@pytest.mark.parametrize("a", [0.0, 0.5, 0.999])
+def test_drift_kernel_is_the_dense_matrix_product(n: int, a: float) -> None:
+    from turntable.fit.parameters import _kernel_times
+
+    v = np.random.default_rng(n).normal(size=(n, 2, 3))
+    dense = a ** np.abs(np.subtract.outer(np.arange(n), np.arange(n)))
+    assert_allclose(_kernel_times(v, a), np.einsum("ij,jkl->ikl", dense, v), rtol=0, atol=1e-12)
+
+
 @pytest.mark.parametrize("model", fit.MODELS)
 def test_slowly_drifting_errors_get_standard_errors_that_cover(model: str) -> None:
     """White noise plus errors that drift as a tracker's do (exponentially correlated over

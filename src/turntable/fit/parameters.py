@@ -17,7 +17,6 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 from scipy.optimize import nnls
-from scipy.signal import lfilter
 
 from turntable.fit.models import N_STATE, _axis_free, _check_model, _full_state, _solve
 
@@ -150,10 +149,14 @@ def _hac_stderr_of(jac: NDArray[np.float64], i: int, residuals: NDArray, lags: i
 
 
 def _kernel_times(v: NDArray[np.float64], a: float) -> NDArray[np.float64]:
-    """K v for K_ij = a^|i - j| along axis 0 (a forward and a backward recursion)."""
-    forward = lfilter([1.0], [1.0, -a], v, axis=0)
-    backward = lfilter([1.0], [1.0, -a], v[::-1], axis=0)[::-1]
-    return forward + backward - v
+    """K v for K_ij = a^|i - j| along axis 0: a convolution, by FFT."""
+    n = v.shape[0]
+    size = 1 << (2 * n).bit_length()
+    kernel = np.zeros(size)
+    kernel[:n] = a ** np.arange(n)
+    kernel[size - n + 1 :] = kernel[n - 1 : 0 : -1]
+    spectrum = np.fft.rfft(kernel).reshape(-1, *[1] * (v.ndim - 1))
+    return np.fft.irfft(spectrum * np.fft.rfft(v, size, axis=0), size, axis=0)[:n]
 
 
 def slow_noise(jac: NDArray[np.float64], residuals: NDArray[np.float64]) -> tuple[float, ...]:

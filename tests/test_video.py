@@ -362,6 +362,7 @@ def test_checks_are_written_with_their_values(rendered, tmp_path, capsys) -> Non
         "tilt",
         "ball_moves",
         "ball_path",
+        "ball_smooth",
         "ball_size",
     }
     assert all(c["passed"] for c in checks.values())

@@ -128,19 +128,23 @@ def test_the_checks_pass_on_a_right_track(tracked) -> None:
     ("name", "change"),
     [
         pytest.param("ball_path", "jumps", id="ball-jumps"),
+        pytest.param("ball_smooth", "wobbles", id="ball-wobbles"),
         pytest.param("axis", "shift", id="mark-circle-off-the-axis"),
         pytest.param("tilt", "squash", id="mark-circle-under-another-tilt"),
     ],
 )
 def test_a_check_fails_on_what_it_checks(tracked, name, change) -> None:
-    """The ball jumping by 3 radii on one frame in seven; the mark's images moved by a tenth
-    of the platter's radius; the mark's circle squashed by 10 % across: each refused by its
-    own check, with one line."""
+    """The ball jumping by 3 radii on one frame in seven; the ball wobbling by 0.15 R over
+    four frames, as a track sliding to the ball's shadow and back does (no jump); the mark's
+    images moved by a tenth of the platter's radius; the mark's circle squashed by 10 %
+    across: each refused by its own check, with one line."""
     track, run = tracked
     px = track.rim.a  # px per P
     image, marks = track.image.copy(), track.mark_image.copy()
     if change == "jumps":
         image[5::7, 0] += 3 * 0.008 / 0.15 * px
+    elif change == "wobbles":
+        image[:, 0] += 0.15 * 0.008 / 0.15 * px * np.sin(0.5 * np.pi * np.arange(len(image)))
     elif change == "shift":
         marks[:, 0] += 0.1 * px
     else:
@@ -148,4 +152,5 @@ def test_a_check_fails_on_what_it_checks(tracked, name, change) -> None:
         marks[:, 1] = centre[1] + 0.9 * (marks[:, 1] - centre[1])
     results = run(image, marks)
     assert not results[name]["passed"]
+    assert change != "wobbles" or results["ball_path"]["passed"]
     assert check.first_failure(results).count("\n") == 0

@@ -16,6 +16,9 @@ and the option that would help.
   platter's frame at least R / 2), not rigidly with it;
 - ``ball_path``: the ball does not jump: at most 2 % of its positions are more than R / 4
   (and what an acceleration of :math:`2 \Omega^2 P` could do) off the line between their neighbours;
+- ``ball_smooth``: the ball's path is smooth: its positions scatter about a quadratic in
+  time through their neighbours (over ``SMOOTH_S`` s, or 2.5 frames, either side) by at
+  most ``SMOOTH_R`` R (rms), whatever the frame rate;
 - ``ball_size``: the ball's image is the size that R and the fitted camera predict (within
   a factor 0.7-1.4 in radius).
 """
@@ -36,6 +39,8 @@ from turntable.video.platter import Ellipse, fit_ellipse
 
 #: The mark's images within this many px (rms) of the fitted circle, or half its size.
 MARK_RMS_PX = 2.0
+#: The ball's scatter about its smooth path: the limit (rms, in R) and the half-window (s).
+SMOOTH_R, SMOOTH_S = 0.06, 0.05
 #: What each check says when it fails, and the option that helps.
 HELP = {
     "rate": "it may not be the mark: give --mark-at U,V (or check --rpm)",
@@ -44,6 +49,10 @@ HELP = {
     "tilt": "it may not be the mark: give --mark-at U,V",
     "ball_moves": "it may be a mark or a label, not the ball: give --ball-at U,V",
     "ball_path": "it may have been taken for something else on the way: give --ball-at U,V",
+    "ball_smooth": (
+        "it may have been confused with its shadow or a label: give --ball-at U,V, or film the "
+        "ball in more contrast with the platter"
+    ),
     "ball_size": "check --ball-radius and --platter-radius, or give --ball-at U,V",
 }
 
@@ -53,6 +62,22 @@ def _circle_centre(xy: np.ndarray) -> np.ndarray:
     a = np.c_[2 * xy, np.ones(len(xy))]
     sol = np.linalg.lstsq(a, (xy**2).sum(axis=1), rcond=None)[0]
     return sol[:2]
+
+
+def scatter(t: np.ndarray, xy: np.ndarray, half: float) -> float:
+    """rms distance of each position (n, 2) at the times ``t`` from the quadratic in time
+    fitted to the others within ``half`` of it (positions with neighbours on both sides
+    and at least 4 of them)."""
+    out = []
+    for i in range(len(t)):
+        near = np.flatnonzero(np.abs(t - t[i]) <= half)
+        near = near[near != i]
+        if len(near) < 4 or near[0] > i or near[-1] < i:
+            continue
+        dt = t[near] - t[i]
+        coef = np.linalg.lstsq(np.c_[np.ones_like(dt), dt, dt**2], xy[near], rcond=None)[0]
+        out.append(float(np.sum((xy[i] - coef[0]) ** 2)))
+    return math.sqrt(np.mean(out)) if out else 0.0
 
 
 def checks(
@@ -149,6 +174,15 @@ def checks(
         0.02,
         jumps <= 0.02,
         f"the ball jumps on {100 * jumps:.2g} % of the frames",
+    )
+    step = float(np.median(np.diff(ts))) if len(ts) > 1 else 0.0
+    smooth = scatter(ts, xy, max(SMOOTH_S, 2.5 * step)) / ball_radius
+    put(
+        "ball_smooth",
+        smooth,
+        SMOOTH_R,
+        smooth <= SMOOTH_R,
+        f"the ball's positions scatter by {smooth:.2g} R about a smooth path",
     )
     predicted = float(np.median(camera.image_radius(cal.pose, paths.ball[seen], ball_radius)))
     measured = math.sqrt(float(np.nanmedian(paths.ball_area)) / math.pi)

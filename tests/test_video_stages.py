@@ -154,3 +154,44 @@ def test_a_check_fails_on_what_it_checks(tracked, name, change) -> None:
     assert not results[name]["passed"]
     assert change != "wobbles" or results["ball_path"]["passed"]
     assert check.first_failure(results).count("\n") == 0
+
+
+def test_the_camera_from_the_rim_alone_keeps_a_camera_s_focal_length() -> None:
+    """An ellipse is the rim's image for a family of cameras, down to a fisheye's looking
+    along the table; a rim seen 1 px too wide on its near side (the platter's side, its
+    shadow), 1920x1080 at 31 degrees, must still give a camera near the true one."""
+    from turntable.video.calibrate import rim_camera
+    from turntable.video.camera import Pose, project
+    from turntable.video.platter import fit_ellipse
+
+    true = Pose(1662.0, math.radians(31.5), math.radians(-3.4), (0.0, -0.02), 0.43, (1920, 1080))
+    angle = np.linspace(0.0, 2 * math.pi, 360, endpoint=False)
+    uv = project(true, 0.15 * np.c_[np.cos(angle), np.sin(angle)])
+    centre = uv.mean(axis=0)
+    near = uv[:, 1] > centre[1]
+    uv[near] += (uv[near] - centre) / np.linalg.norm(uv[near] - centre, axis=1)[:, None]
+    pose = rim_camera(uv, fit_ellipse(uv), true.size, 0.15)
+    assert abs(math.degrees(pose.tilt - true.tilt)) < 2.0
+    assert 0.5 < pose.focal / true.focal < 2.0
+
+
+def test_what_the_rim_cuts_is_no_candidate() -> None:
+    """A dark band along the near rim (the platter's side or shadow, inside a rim fitted a
+    pixel too wide) is cut by the edge of the searched region: not a candidate; a mark near
+    the rim, wholly inside, is."""
+    from turntable.video.find import _parts
+    from turntable.video.platter import Ellipse, Platter
+
+    rgb = np.full((200, 300, 3), 40, np.uint8)
+    rim = Ellipse((150.0, 100.0), 120.0, 80.0, 0.0)
+    yy, xx = np.mgrid[:200, :300]
+    r = rim.radius(np.c_[xx.ravel(), yy.ravel()]).reshape(200, 300)
+    rgb[(r > 0.96) & (yy > 130)] = (90, 70, 50)  # the band along the near rim
+    rgb[(xx - 250) ** 2 + (yy - 100) ** 2 < 16] = 230  # the mark at 0.83 of the rim
+    lab = _lab(rgb)
+    platter = Platter(rim, lab[100, 150].astype(float), np.array([50.0, 10.0, 20.0]))
+    allowed = rim.mask(lab.shape[:2], 1.0 - 3.0 / rim.b)
+    parts = list(_parts(lab, platter, allowed, 10.0, 1e4))
+    centres = [np.argwhere(part)[:, ::-1].mean(axis=0) + corner for _, part, corner, _ in parts]
+    assert len(centres) == 1
+    np.testing.assert_allclose(centres[0], (250.0, 100.0), atol=0.5)

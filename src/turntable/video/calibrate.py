@@ -30,6 +30,11 @@ from turntable.video.platter import Ellipse
 #: Spread of the priors on ln(focal length / image width), on the roll (rad) and on the
 #: rolling shutter's readout time (frame intervals).
 PRIOR_LOG_FOCAL = 1.0
+#: ... and of the camera from the rim alone, whose focal length the rim cannot fix: an
+#: ellipse is the image of the rim for a one-parameter family of cameras, down to a focal
+#: length of a tenth of the image's width at a tilt near 90 degrees, which a rim seen with a
+#: bias of a fraction of a pixel (the platter's side, beneath its rim) then fits best.
+RIM_PRIOR_LOG_FOCAL = 0.01
 PRIOR_ROLL = 1.0
 PRIOR_READOUT = 2.0
 #: Rows are read from the top down within this many frame intervals: where the readout is
@@ -124,6 +129,7 @@ class _Problem:
         self.size, self.p = size, platter_radius
         self.px_per_m = rim.a / platter_radius
         self.log_f0, self.roll0 = math.log(size[0]), roll0
+        self.prior_log_focal = PRIOR_LOG_FOCAL
         self.sigma_rim = self.sigma_mark = 1.0
         self.ellipse = rim
 
@@ -142,7 +148,7 @@ class _Problem:
     def priors(self, theta: NDArray) -> NDArray:
         return np.array(
             [
-                (theta[0] - self.log_f0) / PRIOR_LOG_FOCAL,
+                (theta[0] - self.log_f0) / self.prior_log_focal,
                 (theta[2] - self.roll0) / PRIOR_ROLL,
                 theta[9] / PRIOR_READOUT if len(theta) > 9 else 0.0,
             ]
@@ -176,10 +182,12 @@ def _rim_fit(prob: _Problem, b0: float, roll0: float) -> NDArray:
 def rim_camera(
     rim_pts: NDArray[np.float64], rim: Ellipse, size: tuple[int, int], platter_radius: float
 ) -> Pose:
-    """A camera from the rim alone: right in scale and tilt, its focal length and which side
-    of the platter is nearer set by the priors (enough to see paths on the platter's plane)."""
+    """A camera from the rim alone: right in scale and tilt, its focal length (the image's
+    width) and which side of the platter is nearer set by the priors (enough to see paths
+    on the platter's plane)."""
     roll0 = (-rim.angle + math.pi) % (2 * math.pi) - math.pi
     prob = _Problem(rim_pts, np.zeros(0), np.zeros((0, 2)), size, platter_radius, rim, roll0, 1)
+    prob.prior_log_focal = RIM_PRIOR_LOG_FOCAL
     theta6 = _rim_fit(prob, math.acos(min(rim.b / rim.a, 1.0)), roll0)
     return _pose(theta6, size)
 

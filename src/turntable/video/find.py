@@ -94,10 +94,14 @@ class _Path:
 
 
 def _components(lab_img, platter: Platter, allowed, threshold):
-    """Components of the pixels farther from the platter's colour than ``threshold``."""
+    """Components of the pixels farther from the platter's colour than ``threshold``; those
+    cut by the edge of ``allowed`` (the platter's side or its shadow beyond a rim fitted a
+    pixel too wide) have area 0."""
     dist = np.linalg.norm(lab_img - platter.colour.astype(np.float32), axis=-1)
     mask = ((dist > threshold) & allowed).astype(np.uint8)
     _, labels, stats, centroids = cv2.connectedComponentsWithStats(mask, connectivity=8)
+    inside = cv2.erode(allowed.astype(np.uint8), np.ones((3, 3), np.uint8)).astype(bool)
+    stats[np.unique(labels[allowed & ~inside]), 4] = 0
     return dist, labels, stats[1:], centroids[1:]
 
 

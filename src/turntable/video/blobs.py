@@ -39,6 +39,9 @@ EDGE_LIGHTNESS = 15.0
 EDGE_OFF = 1.0
 #: An outline is a fall to a share below this (2 px beyond it): not the edge of a highlight.
 BELOW = 0.75
+#: A ray whose share rises again by this share of a clear fall's depth within 2 px beyond its
+#: fall has no say in the outline.
+RISE = 0.15
 
 _KERNEL = np.ones((3, 3), np.uint8)
 
@@ -172,57 +175,84 @@ def outline_centre(
     """The centre (window px) of the circle of radius ``radius`` (px) through a round blob's
     outline.
 
-    Along each of ``rays`` rays from ``start``, the outline is the first place, going out, where
-    the share falls most steeply (its fall per pixel at least half the steepest along the ray,
-    from above ``THRESHOLD``, to below `BELOW`: not off a highlight), to a fraction of a pixel.
-    The circle of the given radius nearest those points is fitted by least squares, points more
-    than `EDGE_OFF` px or 3 spreads off it dropped: where a ball's shaded limb is too dim to
-    show, the terminator passes for the outline and lies inside the circle; a shadow beside the
-    ball begins with a second fall, which is never reached. Falls back to ``fallback`` with
-    fewer than 12 points.
+    Along each of ``rays`` rays from ``start``, the outline lies in the first place, going out,
+    where the share falls steeply (its fall per pixel at least half the steepest along the
+    ray, from above ``THRESHOLD``, to below `BELOW`: not off a highlight).  The fall is taken
+    whole, while it stays above half its own steepest (a ripple on its way down does not end
+    it), and the outline is where the share crosses half-way between its values where the
+    fall begins and ends, to a fraction of a pixel.  The circle of the given radius nearest
+    those points is fitted by weighted least squares, points more than `EDGE_OFF` px or 3
+    spreads off it left out (and taken back if the circle moves to them).  A point's weight is
+    its fall's depth over that of the clearest falls (their 90th percentile): the shaded limb
+    of a ball, dim against its shadow, falls less, and inside the true outline.  A ray whose
+    share rises again by `RISE` of that depth within 2 px beyond its fall has no weight: the
+    fall was to the darkest part of the limb (a colour off the line between the platter's and
+    the ball's, of share 0), not to the platter.  A shadow beside the ball begins with a second
+    fall, which is never reached.  Falls back to ``fallback`` with fewer than ``min_points``
+    points, or fewer than half as many kept with weight.
     """
     step = 0.25
+    near = int(2 / step)  # samples in 2 px
     r = np.arange(0.3 * radius, 1.7 * radius + 3.0, step)
     a = np.linspace(0.0, 2 * math.pi, rays, endpoint=False)
     pu = (start[0] + np.cos(a)[:, None] * r).astype(np.float32)
     pv = (start[1] + np.sin(a)[:, None] * r).astype(np.float32)
     prof = cv2.remap(share, pu, pv, cv2.INTER_LINEAR, borderMode=cv2.BORDER_REPLICATE)
     fall = (prof[:, :-2] - prof[:, 2:]) / (2 * step)  # centred, at samples 1 .. n-2
-    points = []
+    top = fall.max(axis=1)
+    peaks = np.maximum.accumulate(prof[:, :-2], axis=1) > THRESHOLD
+    points, depth, rise = [], [], []
     for k in range(rays):
-        f = fall[k]
-        strong = (f >= 0.5 * f.max()) & (prof[k, 1:-1] < prof[k, 0]) & (f.max() > 0.1)
-        strong &= np.maximum.accumulate(prof[k, :-2]) > THRESHOLD
-        j = None
+        f, p = fall[k], prof[k]
+        strong = (f >= 0.5 * top[k]) & (p[1:-1] < p[0]) & (top[k] > 0.1) & peaks[k]
+        j = end = None
         for i in np.flatnonzero(strong):
-            if j is not None and i <= j:
+            if end is not None and i <= end:
                 continue
-            j = i
-            while j + 1 < f.size and f[j + 1] > f[j]:
-                j += 1  # the peak of this fall
-            if prof[k, min(j + 1 + int(2 / step), prof.shape[1] - 1)] < BELOW:
+            end, peak = i, f[i]
+            while end + 1 < f.size and f[end + 1] > 0.5 * peak:
+                end += 1  # the whole of this fall, while above half its steepest
+                peak = max(peak, f[end])
+            j = i + int(np.argmax(f[i : end + 1]))  # its steepest point
+            if p[min(j + 1 + near, p.size - 1)] < BELOW:
                 break  # a fall to near the platter or a shadow, not off a highlight
         else:
             continue
-        if 0 < j < f.size - 1:
-            den = f[j - 1] - 2 * f[j] + f[j + 1]
-            j = j + (0.5 * (f[j - 1] - f[j + 1]) / den if den < 0 else 0.0)
-        rr = r[0] + (j + 1) * step
+        while i > 0 and f[i - 1] > 0.5 * peak:
+            i -= 1  # where the fall begins
+        inside, outside = float(p[i]), float(p[end + 2])  # the share before and after it
+        if outside >= inside:
+            continue
+        level = 0.5 * (inside + outside)
+        below = i + int(np.argmax(p[i:] < level))  # the first sample below half-way
+        x = below - 1 + (p[below - 1] - level) / max(float(p[below - 1] - p[below]), 1e-6)
+        after = p[end + 2 : end + 3 + near]
+        rr = r[0] + x * step
         points.append((start[0] + math.cos(a[k]) * rr, start[1] + math.sin(a[k]) * rr))
-    pts = np.array(points).reshape(-1, 2)
+        depth.append(inside - outside)
+        rise.append(float((after - np.minimum.accumulate(after)).max()))
+    if len(points) < min_points:
+        return fallback
+    depth_a = np.array(depth)
+    clear = float(np.percentile(depth_a, 90))
+    weight = np.clip(depth_a / clear, 0.0, 1.0) * (np.array(rise) < RISE * clear)
+    pts, weight = np.array(points)[weight > 0], weight[weight > 0]
+    keep = np.ones(len(pts), bool)
     centre = np.asarray(start, float)
     for _ in range(6):
-        if len(pts) < min_points:
+        if 2 * keep.sum() < min_points:
             return fallback
+        sw = np.sqrt(weight[keep])[:, None]
         for _ in range(3):  # Gauss-Newton for the centre of a circle of known radius
-            d = pts - centre
+            d = pts[keep] - centre
             dist = np.maximum(np.hypot(d[:, 0], d[:, 1]), 1e-9)
             jac = -d / dist[:, None]
-            centre = centre - np.linalg.lstsq(jac, dist - radius, rcond=None)[0]
-        dev = np.hypot(*(pts - centre).T) - radius
-        spread = 1.4826 * float(np.median(np.abs(dev - np.median(dev)))) + 0.1
-        keep = np.abs(dev - np.median(dev)) < min(3 * spread, EDGE_OFF)
-        if keep.all():
+            centre = centre - np.linalg.lstsq(jac * sw, (dist - radius) * sw[:, 0], rcond=None)[0]
+        dev = np.hypot(*(pts - centre).T) - radius  # of every point: a dropped one may return
+        mid = float(np.median(dev[keep]))
+        spread = 1.4826 * float(np.median(np.abs(dev[keep] - mid))) + 0.1
+        again = np.abs(dev - mid) < min(3 * spread, EDGE_OFF)
+        if (again == keep).all():
             break
-        pts = pts[keep]
+        keep = again
     return centre

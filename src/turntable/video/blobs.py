@@ -201,11 +201,11 @@ def outline_centre(
     fall = (prof[:, :-2] - prof[:, 2:]) / (2 * step)  # centred, at samples 1 .. n-2
     top = fall.max(axis=1)
     peaks = np.maximum.accumulate(prof[:, :-2], axis=1) > THRESHOLD
-    points, depth, rise = [], [], []
+    found = []  # (ray, the sample where its fall begins, where it ends - 2)
     for k in range(rays):
         f, p = fall[k], prof[k]
         strong = (f >= 0.5 * top[k]) & (p[1:-1] < p[0]) & (top[k] > 0.1) & peaks[k]
-        j = end = None
+        end = None
         for i in np.flatnonzero(strong):
             if end is not None and i <= end:
                 continue
@@ -220,23 +220,26 @@ def outline_centre(
             continue
         while i > 0 and f[i - 1] > 0.5 * peak:
             i -= 1  # where the fall begins
-        inside, outside = float(p[i]), float(p[end + 2])  # the share before and after it
-        if outside >= inside:
-            continue
-        level = 0.5 * (inside + outside)
-        below = i + int(np.argmax(p[i:] < level))  # the first sample below half-way
-        x = below - 1 + (p[below - 1] - level) / max(float(p[below - 1] - p[below]), 1e-6)
-        after = p[end + 2 : end + 3 + near]
-        rr = r[0] + x * step
-        points.append((start[0] + math.cos(a[k]) * rr, start[1] + math.sin(a[k]) * rr))
-        depth.append(inside - outside)
-        rise.append(float((after - np.minimum.accumulate(after)).max()))
-    if len(points) < min_points:
+        found.append((k, i, end))
+    if len(found) < min_points:
         return fallback
-    depth_a = np.array(depth)
-    clear = float(np.percentile(depth_a, 90))
-    weight = np.clip(depth_a / clear, 0.0, 1.0) * (np.array(rise) < RISE * clear)
-    pts, weight = np.array(points)[weight > 0], weight[weight > 0]
+    k, begin, end = np.array(found).T
+    p = prof[k]
+    inside, outside = p[np.arange(k.size), begin], p[np.arange(k.size), end + 2]
+    level = 0.5 * (inside + outside)
+    # the first sample below half-way, and the crossing between it and the one before
+    cols = np.arange(p.shape[1])
+    below = np.argmax((cols > begin[:, None]) & (p < level[:, None]), axis=1)
+    hi, lo = p[np.arange(k.size), below - 1], p[np.arange(k.size), below]
+    rr = r[0] + (below - 1 + (hi - level) / np.maximum(hi - lo, 1e-6)) * step
+    points = np.column_stack([start[0] + np.cos(a[k]) * rr, start[1] + np.sin(a[k]) * rr])
+    after = p[np.arange(k.size)[:, None], np.minimum(end[:, None] + 2 + np.arange(near + 1),
+                                                     p.shape[1] - 1)]  # fmt: skip
+    rise = (after - np.minimum.accumulate(after, axis=1)).max(axis=1)
+    depth = inside - outside
+    clear = float(np.percentile(depth, 90))
+    weight = np.clip(depth / clear, 0.0, 1.0) * (rise < RISE * clear) * (depth > 0)
+    pts, weight = points[weight > 0], weight[weight > 0]
     keep = np.ones(len(pts), bool)
     centre = np.asarray(start, float)
     for _ in range(6):

@@ -198,7 +198,7 @@ def test_the_centre_of_a_ball_shaded_by_a_low_light_is_that_of_its_silhouette(am
     lies against its shadow.  The centre from its outline is that of its silhouette within
     0.15 px (0.007 R).  Taking the first peak of the first fall along each ray as the outline,
     and every ray alike, the dark limb passed for it: the centre was 0.26 px off with an
-    ambient light of 0.2, 5.5 px (the blob's centroid) with 0.05."""
+    ambient light of 0.2, 5.6 px with 0.05."""
     picture, colour, platter, r_px, centroid = _shaded_ball(ambient)
     colour = blobs.Colour(colour, platter)
     box = (slice(0, 96), slice(0, 96))

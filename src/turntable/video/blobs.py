@@ -42,6 +42,9 @@ BELOW = 0.75
 #: A ray whose share rises again by this share of a clear fall's depth within 2 px beyond its
 #: fall has no say in the outline.
 RISE = 0.15
+#: The outline is where the share crosses half-way down its fall, unless that is farther than
+#: this (px) from the fall's steepest point (two falls run together): then the steepest point.
+HALF_WAY = 0.5
 
 _KERNEL = np.ones((3, 3), np.uint8)
 
@@ -175,21 +178,23 @@ def outline_centre(
     """The centre (window px) of the circle of radius ``radius`` (px) through a round blob's
     outline.
 
-    Along each of ``rays`` rays from ``start``, the outline lies in the first place, going out,
-    where the share falls steeply (its fall per pixel at least half the steepest along the
+    Along each of ``rays`` rays from ``start``, the outline lies on the first fall of the
+    share, going out, that is steep (its fall per pixel at least half the steepest along the
     ray, from above ``THRESHOLD``, to below `BELOW`: not off a highlight).  The fall is taken
     whole, while it stays above half its own steepest (a ripple on its way down does not end
-    it), and the outline is where the share crosses half-way between its values where the
-    fall begins and ends, to a fraction of a pixel.  The circle of the given radius nearest
+    it), and the outline is where the share crosses half-way between its values where the fall
+    begins and ends, to a fraction of a pixel; or, where that lies more than `HALF_WAY` from
+    the fall's steepest point (the ball's fall runs into that of a shadow beside it), that
+    point.  The circle of the given radius nearest
     those points is fitted by weighted least squares, points more than `EDGE_OFF` px or 3
-    spreads off it left out (and taken back if the circle moves to them).  A point's weight is
-    its fall's depth over that of the clearest falls (their 90th percentile): the shaded limb
-    of a ball, dim against its shadow, falls less, and inside the true outline.  A ray whose
-    share rises again by `RISE` of that depth within 2 px beyond its fall has no weight: the
-    fall was to the darkest part of the limb (a colour off the line between the platter's and
-    the ball's, of share 0), not to the platter.  A shadow beside the ball begins with a second
-    fall, which is never reached.  Falls back to ``fallback`` with fewer than ``min_points``
-    points, or fewer than half as many kept with weight.
+    spreads off it left out (and taken back if the circle moves to them).  A ray whose share
+    rises again, within 2 px beyond its fall, by `RISE` of the depth of the clearest falls
+    (their 90th percentile) has no weight: on a ball's shaded limb, the share falls to the
+    darkest part of the limb (a colour off the line between the platter's and the ball's, of
+    share 0), inside the outline, and rises beyond it.  A fall shallower than half the clearest
+    weighs in proportion (a dim limb against its shadow).  A shadow beside the ball begins
+    with a second fall, which is never reached.  Falls back to ``fallback`` with fewer than
+    ``min_points`` points, or fewer than half as many kept with weight.
     """
     step = 0.25
     near = int(2 / step)  # samples in 2 px
@@ -201,7 +206,7 @@ def outline_centre(
     fall = (prof[:, :-2] - prof[:, 2:]) / (2 * step)  # centred, at samples 1 .. n-2
     top = fall.max(axis=1)
     peaks = np.maximum.accumulate(prof[:, :-2], axis=1) > THRESHOLD
-    found = []  # (ray, the sample where its fall begins, where it ends - 2)
+    found = []  # (ray, where its fall begins, its steepest point, where it ends), in fall's
     for k in range(rays):
         f, p = fall[k], prof[k]
         strong = (f >= 0.5 * top[k]) & (p[1:-1] < p[0]) & (top[k] > 0.1) & peaks[k]
@@ -220,26 +225,30 @@ def outline_centre(
             continue
         while i > 0 and f[i - 1] > 0.5 * peak:
             i -= 1  # where the fall begins
-        found.append((k, i, end))
+        found.append((k, i, j, end))
     if len(found) < min_points:
         return fallback
-    k, begin, end = np.array(found).T
-    p = prof[k]
-    inside, outside = p[np.arange(k.size), begin], p[np.arange(k.size), end + 2]
+    k, begin, j, end = np.array(found).T
+    f = fall[k[:, None], np.clip(j[:, None] + np.arange(-1, 2), 0, fall.shape[1] - 1)]
+    den = f[:, 0] - 2 * f[:, 1] + f[:, 2]
+    ok = (den < 0) & (j > 0) & (j < fall.shape[1] - 1)
+    x = j + np.where(ok, 0.5 * (f[:, 0] - f[:, 2]) / np.where(ok, den, -1.0), 0.0)
+    steepest = r[0] + (x + 1) * step  # the peak of the parabola through the fall about it
+    p, n = prof[k], np.arange(k.size)
+    inside, outside = p[n, begin], p[n, end + 2]
     level = 0.5 * (inside + outside)
-    # the first sample below half-way, and the crossing between it and the one before
-    cols = np.arange(p.shape[1])
-    below = np.argmax((cols > begin[:, None]) & (p < level[:, None]), axis=1)
-    hi, lo = p[np.arange(k.size), below - 1], p[np.arange(k.size), below]
-    rr = r[0] + (below - 1 + (hi - level) / np.maximum(hi - lo, 1e-6)) * step
-    points = np.column_stack([start[0] + np.cos(a[k]) * rr, start[1] + np.sin(a[k]) * rr])
-    after = p[np.arange(k.size)[:, None], np.minimum(end[:, None] + 2 + np.arange(near + 1),
+    below = np.argmax((np.arange(p.shape[1]) > begin[:, None]) & (p < level[:, None]), axis=1)
+    hi, lo = p[n, below - 1], p[n, below]
+    half = r[0] + (below - 1 + (hi - level) / np.maximum(hi - lo, 1e-6)) * step
+    rr = np.where(np.abs(half - steepest) < HALF_WAY, half, steepest)
+    pts = np.column_stack([start[0] + np.cos(a[k]) * rr, start[1] + np.sin(a[k]) * rr])
+    depth = inside - outside
+    after = p[n[:, None], np.minimum(end[:, None] + 2 + np.arange(near + 1),
                                                      p.shape[1] - 1)]  # fmt: skip
     rise = (after - np.minimum.accumulate(after, axis=1)).max(axis=1)
-    depth = inside - outside
     clear = float(np.percentile(depth, 90))
-    weight = np.clip(depth / clear, 0.0, 1.0) * (rise < RISE * clear) * (depth > 0)
-    pts, weight = points[weight > 0], weight[weight > 0]
+    weight = np.clip(2 * depth / clear, 0.0, 1.0) * (rise < RISE * clear)
+    pts, weight = pts[weight > 0], weight[weight > 0]
     keep = np.ones(len(pts), bool)
     centre = np.asarray(start, float)
     for _ in range(6):

@@ -39,6 +39,12 @@ EDGE_LIGHTNESS = 15.0
 EDGE_OFF = 1.0
 #: An outline is a fall to a share below this (2 px beyond it): not the edge of a highlight.
 BELOW = 0.75
+#: A ray whose share rises again by this share of a clear fall's depth within 2 px beyond its
+#: fall has no say in the outline.
+RISE = 0.15
+#: The outline is where the share crosses half-way down its fall, unless that is farther than
+#: this (px) from the fall's steepest point (two falls run together): then the steepest point.
+HALF_WAY = 0.5
 
 _KERNEL = np.ones((3, 3), np.uint8)
 
@@ -172,57 +178,93 @@ def outline_centre(
     """The centre (window px) of the circle of radius ``radius`` (px) through a round blob's
     outline.
 
-    Along each of ``rays`` rays from ``start``, the outline is the first place, going out, where
-    the share falls most steeply (its fall per pixel at least half the steepest along the ray,
-    from above ``THRESHOLD``, to below `BELOW`: not off a highlight), to a fraction of a pixel.
-    The circle of the given radius nearest those points is fitted by least squares, points more
-    than `EDGE_OFF` px or 3 spreads off it dropped: where a ball's shaded limb is too dim to
-    show, the terminator passes for the outline and lies inside the circle; a shadow beside the
-    ball begins with a second fall, which is never reached. Falls back to ``fallback`` with
-    fewer than 12 points.
+    Along each of ``rays`` rays from ``start``, the outline lies on the first fall of the
+    share, going out, that is steep (its fall per pixel at least half the steepest along the
+    ray, from above ``THRESHOLD``, to below `BELOW`: not off a highlight).  The fall is taken
+    whole, while it stays above half its own steepest (a ripple on its way down does not end
+    it), and the outline is where the share crosses half-way between its values where the fall
+    begins and ends, to a fraction of a pixel; or, where that lies more than `HALF_WAY` from
+    the fall's steepest point (the ball's fall runs into that of a shadow beside it), that
+    point.  The circle of the given radius nearest
+    those points is fitted by weighted least squares, points more than `EDGE_OFF` px or 3
+    spreads off it left out (and taken back if the circle moves to them).  A ray whose share
+    rises again, within 2 px beyond its fall, by `RISE` of the depth of the clearest falls
+    (their 90th percentile) has no weight: on a ball's shaded limb, the share falls to the
+    darkest part of the limb (a colour off the line between the platter's and the ball's, of
+    share 0), inside the outline, and rises beyond it.  A fall shallower than half the clearest
+    weighs in proportion (a dim limb against its shadow).  A shadow beside the ball begins
+    with a second fall, which is never reached.  Falls back to ``fallback`` with fewer than
+    ``min_points`` points, or fewer than half as many kept with weight.
     """
     step = 0.25
+    near = int(2 / step)  # samples in 2 px
     r = np.arange(0.3 * radius, 1.7 * radius + 3.0, step)
     a = np.linspace(0.0, 2 * math.pi, rays, endpoint=False)
     pu = (start[0] + np.cos(a)[:, None] * r).astype(np.float32)
     pv = (start[1] + np.sin(a)[:, None] * r).astype(np.float32)
     prof = cv2.remap(share, pu, pv, cv2.INTER_LINEAR, borderMode=cv2.BORDER_REPLICATE)
     fall = (prof[:, :-2] - prof[:, 2:]) / (2 * step)  # centred, at samples 1 .. n-2
-    points = []
+    top = fall.max(axis=1)
+    peaks = np.maximum.accumulate(prof[:, :-2], axis=1) > THRESHOLD
+    found = []  # (ray, where its fall begins, its steepest point, where it ends), in fall's
     for k in range(rays):
-        f = fall[k]
-        strong = (f >= 0.5 * f.max()) & (prof[k, 1:-1] < prof[k, 0]) & (f.max() > 0.1)
-        strong &= np.maximum.accumulate(prof[k, :-2]) > THRESHOLD
-        j = None
+        f, p = fall[k], prof[k]
+        strong = (f >= 0.5 * top[k]) & (p[1:-1] < p[0]) & (top[k] > 0.1) & peaks[k]
+        end = None
         for i in np.flatnonzero(strong):
-            if j is not None and i <= j:
+            if end is not None and i <= end:
                 continue
-            j = i
-            while j + 1 < f.size and f[j + 1] > f[j]:
-                j += 1  # the peak of this fall
-            if prof[k, min(j + 1 + int(2 / step), prof.shape[1] - 1)] < BELOW:
+            end, peak = i, f[i]
+            while end + 1 < f.size and f[end + 1] > 0.5 * peak:
+                end += 1  # the whole of this fall, while above half its steepest
+                peak = max(peak, f[end])
+            j = i + int(np.argmax(f[i : end + 1]))  # its steepest point
+            if p[min(j + 1 + near, p.size - 1)] < BELOW:
                 break  # a fall to near the platter or a shadow, not off a highlight
         else:
             continue
-        if 0 < j < f.size - 1:
-            den = f[j - 1] - 2 * f[j] + f[j + 1]
-            j = j + (0.5 * (f[j - 1] - f[j + 1]) / den if den < 0 else 0.0)
-        rr = r[0] + (j + 1) * step
-        points.append((start[0] + math.cos(a[k]) * rr, start[1] + math.sin(a[k]) * rr))
-    pts = np.array(points).reshape(-1, 2)
+        while i > 0 and f[i - 1] > 0.5 * peak:
+            i -= 1  # where the fall begins
+        found.append((k, i, j, end))
+    if len(found) < min_points:
+        return fallback
+    k, begin, j, end = np.array(found).T
+    f = fall[k[:, None], np.clip(j[:, None] + np.arange(-1, 2), 0, fall.shape[1] - 1)]
+    den = f[:, 0] - 2 * f[:, 1] + f[:, 2]
+    ok = (den < 0) & (j > 0) & (j < fall.shape[1] - 1)
+    x = j + np.where(ok, 0.5 * (f[:, 0] - f[:, 2]) / np.where(ok, den, -1.0), 0.0)
+    steepest = r[0] + (x + 1) * step  # the peak of the parabola through the fall about it
+    p, n = prof[k], np.arange(k.size)
+    inside, outside = p[n, begin], p[n, end + 2]
+    level = 0.5 * (inside + outside)
+    below = np.argmax((np.arange(p.shape[1]) > begin[:, None]) & (p < level[:, None]), axis=1)
+    hi, lo = p[n, below - 1], p[n, below]
+    half = r[0] + (below - 1 + (hi - level) / np.maximum(hi - lo, 1e-6)) * step
+    rr = np.where(np.abs(half - steepest) < HALF_WAY, half, steepest)
+    pts = np.column_stack([start[0] + np.cos(a[k]) * rr, start[1] + np.sin(a[k]) * rr])
+    depth = inside - outside
+    after = p[n[:, None], np.minimum(end[:, None] + 2 + np.arange(near + 1),
+                                                     p.shape[1] - 1)]  # fmt: skip
+    rise = (after - np.minimum.accumulate(after, axis=1)).max(axis=1)
+    clear = float(np.percentile(depth, 90))
+    weight = np.clip(2 * depth / clear, 0.0, 1.0) * (rise < RISE * clear)
+    pts, weight = pts[weight > 0], weight[weight > 0]
+    keep = np.ones(len(pts), bool)
     centre = np.asarray(start, float)
     for _ in range(6):
-        if len(pts) < min_points:
+        if 2 * keep.sum() < min_points:
             return fallback
+        sw = np.sqrt(weight[keep])[:, None]
         for _ in range(3):  # Gauss-Newton for the centre of a circle of known radius
-            d = pts - centre
+            d = pts[keep] - centre
             dist = np.maximum(np.hypot(d[:, 0], d[:, 1]), 1e-9)
             jac = -d / dist[:, None]
-            centre = centre - np.linalg.lstsq(jac, dist - radius, rcond=None)[0]
-        dev = np.hypot(*(pts - centre).T) - radius
-        spread = 1.4826 * float(np.median(np.abs(dev - np.median(dev)))) + 0.1
-        keep = np.abs(dev - np.median(dev)) < min(3 * spread, EDGE_OFF)
-        if keep.all():
+            centre = centre - np.linalg.lstsq(jac * sw, (dist - radius) * sw[:, 0], rcond=None)[0]
+        dev = np.hypot(*(pts - centre).T) - radius  # of every point: a dropped one may return
+        mid = float(np.median(dev[keep]))
+        spread = 1.4826 * float(np.median(np.abs(dev[keep] - mid))) + 0.1
+        again = np.abs(dev - mid) < min(3 * spread, EDGE_OFF)
+        if (again == keep).all():
             break
-        pts = pts[keep]
+        keep = again
     return centre

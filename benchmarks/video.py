@@ -1,9 +1,10 @@
 """From videos to friction on scenes of several kinds and two renderers: tracked or refused,
 position error, Omega, coverage, selection, speed, and confident wrong answers.
 
-Every video is SYNTHETIC: 1280x720 at 240 frames/s, of a random ball of either model on a
-platter of radius 15 cm at 33 1/3 rpm (coefficient drawn, as Fig. 8 says a film can measure
-it, at the tracking noise `NOISE`), tilt 0-35 degrees, roll up to 5.  The scene families
+Every video is SYNTHETIC: 1280x720 at 240 frames/s (but ``mujoco_rates``), of a random ball
+of either model on a platter of radius 15 cm at 33 1/3 rpm (coefficient drawn, as Fig. 8
+says a film at its frame rate can measure it, at the tracking noise `NOISE`), tilt 0-35
+degrees, roll up to 5.  The scene families
 (`FAMILIES`):
 
 - rendered by `turntable.video.render` within the filming guide: a white ball on a dark platter
@@ -15,7 +16,8 @@ it, at the tracking noise `NOISE`), tilt 0-35 degrees, roll up to 5.  The scene 
 - rendered by it outside the guide: a mark as large as the ball (``big_mark``), a ball of
   nearly the platter's colour (``camouflage``);
 - rendered by MuJoCo (``mujoco``, `mujoco_scene.render_mujoco`), a renderer the project did
-  not write: its shading, anti-aliasing and shadows.
+  not write: its shading, anti-aliasing and shadows; and the same at other sizes and frame
+  rates (``mujoco_rates``, `RATES`: 1080p at 60 and 120 frames/s, 720p at 30 and 60).
 
 Each video is tracked as ``turntable track`` does (timed) and, if tracked, fitted as
 ``turntable fit VIDEO`` does.  A *confident wrong answer* is a video tracked with exit
@@ -155,6 +157,17 @@ def _mujoco(rng):
     }, 5.0
 
 
+#: (width, height, frames/s) of the videos of family ``mujoco_rates``: a phone's and a
+#: camera's other modes.
+RATES = [(1920, 1080, 60.0), (1280, 720, 60.0), (1280, 720, 30.0), (1920, 1080, 120.0)]
+
+
+def _mujoco_rates(rng):
+    fields, duration = _mujoco(rng)
+    width, height, fps = RATES[rng.integers(len(RATES))]
+    return fields | {"size": (width, height), "fps": fps}, duration
+
+
 #: name: (draw of the scene's fields and the duration, within the filming guide, renderer)
 FAMILIES = {
     "classic": (_classic, True, "turntable"),
@@ -165,6 +178,7 @@ FAMILIES = {
     "big_mark": (_big_mark, False, "turntable"),
     "camouflage": (_camouflage, False, "turntable"),
     "mujoco": (_mujoco, True, "mujoco"),
+    "mujoco_rates": (_mujoco_rates, True, "mujoco"),
 }
 
 
@@ -175,7 +189,7 @@ def draw(rng: np.random.Generator, i: int, family: str, level: float) -> dict[st
     model = fit.MODELS[i % 2]
     radius = float(rng.uniform(0.006, 0.010))
     setup = film.Setup(radius, film.rpm_to_omega(RPM), 0.4, (0.0, 0.0))
-    camera = film.Camera(240.0, NOISE, duration)
+    camera = film.Camera(fields.get("fps", 240.0), NOISE, duration)
     while True:
         r0, a0 = rng.uniform(0.04, 0.09), rng.uniform(0, 2 * math.pi)
         v = rng.normal(0.0, 0.03, 2)

@@ -173,10 +173,14 @@ def guide_table(result: dict[str, Any]) -> str:
     """The table of the guide: each row measured, its runs, its target."""
     lines = [
         f"Measured with {', '.join(f'`{c}`' for c in result['commands'])} on "
-        f"{result['cpu_count']} cores "
-        f"({result['machine']}), under the load of other processes (a load average of "
-        f"{result['load_average_1min']['min']}-{result['load_average_1min']['max']} over the "
-        "runs); seconds of wall time, each run, the median, and the median CPU time of the "
+        f"{result['cpu_count']} cores ({result['machine']})"
+        + (
+            f", under the load of other processes (a load average of {load['min']}-{load['max']}"
+            " over the runs)"
+            if (load := result.get("load_average_1min"))
+            else ""
+        )
+        + "; seconds of wall time, each run, the median, and the median CPU time of the "
         "processes (which the load stretches less):",
         "",
         "| what | command | runs | median | CPU | target |",
@@ -254,9 +258,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     out = ROOT / args.out  # an absolute --out replaces ROOT
     command = shlex.join(["python", "benchmarks/pipeline.py", *argv])
     previous = json.loads(out.read_text()).get("pipeline", {}) if out.exists() else {}
+    kept: list[dict[str, Any]] = []
     if previous.get("runs") and not args.compare:  # the rows not measured now are kept
         measured = {key for run in runs["this"] for key in run}
         kept = [{k: v for k, v in run.items() if k not in measured} for run in previous["runs"]]
+    if any(kept):
         runs["this"] = [
             (kept[i] if i < len(kept) else {}) | (runs["this"][i] if i < len(runs["this"]) else {})
             for i in range(max(len(kept), len(runs["this"])))
@@ -264,7 +270,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         loads += list(previous.get("load_average_1min", {}).values())
     commands = [*dict.fromkeys([*previous.get("commands", []), command])]
     result: dict[str, Any] = {
-        "commands": commands if previous.get("runs") and not args.compare else [command],
+        "commands": commands if any(kept) else [command],
         "cores": args.cores,
         "cpu_count": os.cpu_count(),
         "machine": f"{platform.system()} {platform.machine()}",

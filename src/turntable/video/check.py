@@ -64,7 +64,7 @@ def _circle_centre(xy: np.ndarray) -> np.ndarray:
     return sol[:2]
 
 
-def scatter(t: np.ndarray, xy: np.ndarray, half: float) -> float:
+def _scatter(t: np.ndarray, xy: np.ndarray, half: float) -> float:
     """rms distance of each position (n, 2) at the times ``t`` from the quadratic in time
     fitted to the others within ``half`` of it (positions with neighbours on both sides
     and at least 4 of them)."""
@@ -176,7 +176,7 @@ def checks(
         f"the ball jumps on {100 * jumps:.2g} % of the frames",
     )
     step = float(np.median(np.diff(ts))) if len(ts) > 1 else 0.0
-    smooth = scatter(ts, xy, max(SMOOTH_S, 2.5 * step)) / ball_radius
+    smooth = _scatter(ts, xy, max(SMOOTH_S, 2.5 * step)) / ball_radius
     put(
         "ball_smooth",
         smooth,

@@ -38,6 +38,7 @@ rule campaign_film:
         "logs/campaign/{film}.simulate.log",
     wildcard_constraints:
         film="|".join(map(re.escape, CAMPAIGN_SYNTHETIC)) or "^$",
+    priority: 1
     conda:
         "../envs/turntable.yaml"
     params:
@@ -60,6 +61,7 @@ rule campaign_fit:
         "logs/campaign/batch_{batch}.log",
     wildcard_constraints:
         batch="|".join(CAMPAIGN_BATCHES) or "^$",
+    priority: 1
     conda:
         "../envs/turntable.yaml"
     params:

@@ -1,5 +1,6 @@
 # From video to friction: a SYNTHETIC video of the ball of section film (section fig10_video),
-# tracked by `turntable track` and fitted by `turntable fit VIDEO`.
+# tracked by `turntable track` and fitted by `turntable fit VIDEO`. Its jobs and the campaign's
+# (priority 1) are the longest chains of the build: they start first.
 import json
 
 from turntable.campaign import Film, simulation
@@ -34,6 +35,7 @@ rule render_video:
         "logs/render_video.log",
     benchmark:
         "logs/benchmarks/render_video.tsv"
+    priority: 1
     conda:
         "../envs/turntable.yaml"
     params:
@@ -52,6 +54,7 @@ rule track_video:
         json=ensure(VIDEO_TRACK.replace(".csv", ".json"), non_empty=True),
     log:
         "logs/track_video.log",
+    priority: 1
     conda:
         "../envs/turntable.yaml"
     params:
@@ -71,6 +74,7 @@ rule fit_video:
         ensure(VIDEO_FIT, non_empty=True),
     log:
         "logs/fit_video.log",
+    priority: 1
     conda:
         "../envs/turntable.yaml"
     params:

@@ -150,9 +150,9 @@ def merged_ball(
     picture: Picture, box: tuple[slice, slice], colour: Colour, near: NDArray, radius: float
 ) -> Blob | None:
     """A ball whose blob runs into something of a like colour (a label it crosses): its
-    centre from the outline about ``near`` where three rays in four find it (the side it
-    touches the label shows as a fall too, to the label's lower share), within R / 4 of
-    ``near``; None if not (a label of the ball's own colour hides that side)."""
+    centre from the outline about ``near`` where half of the rays find it (the half that
+    borders the platter, at least, when the ball lies on the label's edge), within R / 4 of
+    ``near``; None if not (a label of the ball's own colour hides more than that)."""
     lab_img = lab(picture, box)
     start = np.array([near[0] - box[1].start, near[1] - box[0].start])
     h, w = lab_img.shape[:2]
@@ -160,7 +160,7 @@ def merged_ball(
         return None
     if colour.share(lab_img)[int(start[1]), int(start[0])] < THRESHOLD:
         return None
-    centre = outline_centre(colour.edge_share(lab_img), start, radius, None, min_points=36)
+    centre = outline_centre(colour.edge_share(lab_img), start, radius, None, min_points=24)
     if centre is None or np.hypot(*(centre - start)) > 0.25 * radius:
         return None
     return Blob(float(centre[0]) + box[1].start, float(centre[1]) + box[0].start,

@@ -12,6 +12,7 @@ rule claims:
         "logs/claims.log",
     benchmark:
         "logs/benchmarks/claims.tsv"
+    priority: 1
     conda:
         "../envs/turntable.yaml"
     params:

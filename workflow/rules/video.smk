@@ -1,6 +1,6 @@
 # From video to friction: a SYNTHETIC video of the ball of section film (section fig10_video),
-# tracked by `turntable track` and fitted by `turntable fit VIDEO`. Its jobs and the campaign's
-# (priority 1) are the longest chains of the build: they start first.
+# tracked by `turntable track` and fitted by `turntable fit VIDEO`. Its jobs, the campaign's and
+# the claims (priority 1) are the longest chains of the build: they start first.
 import json
 
 from turntable.campaign import Film, simulation

@@ -270,3 +270,27 @@ def test_a_ball_on_a_label_of_a_like_colour_is_found_by_the_half_of_its_outline(
     got = blobs.merged_ball(picture, box, colour, centroid + np.array([1.5, -1.0]), r_px)
     assert got is not None
     assert np.hypot(got.u - centroid[0], got.v - centroid[1]) < 0.2
+
+
+def test_a_crescent_of_the_ball_s_size_is_no_ball() -> None:
+    """A steel ball on a platter of its grey: only its shaded limb and its shadow differ from
+    the platter, a crescent of about the ball's area.  Its centre was followed, 0.75 R off the
+    ball's, with exit status 0; now no candidate is the ball (and the search says so)."""
+    from turntable.video import camera
+    from turntable.video.find import MIN_SOLIDITY, Candidate, _choose_ball, _shape
+
+    pose = camera.Pose(1000.0, 0.0, 0.0, (0.0, 0.0), 0.4, (120, 120))
+    v, u = np.mgrid[0:120, 0:120]
+    ball = np.hypot(u - 60, v - 60) < 20  # R = 8 mm at 0.4 m: 20 px
+    shadow = np.hypot(u - 52, v - 68) < 20
+    lit = np.hypot(u - 64, v - 56) < 19
+    regions = {"ball": ball, "with-shadow": ball | shadow, "crescent": (ball | shadow) & ~lit}
+    shapes = {name: _shape(r.astype(np.uint8)) for name, r in regions.items()}
+    assert shapes["ball"][1] > 0.95
+    assert shapes["with-shadow"][1] > MIN_SOLIDITY
+    assert shapes["crescent"][1] < MIN_SOLIDITY
+    for name, region in regions.items():
+        vv, uu = np.nonzero(region)
+        c = Candidate(uu.mean(), vv.mean(), float(region.sum()), np.zeros(3), 30.0,
+                      *shapes[name])  # fmt: skip
+        assert (_choose_ball([c], pose, 0.008) is None) == (name == "crescent")

@@ -47,6 +47,10 @@ RATE_RANGE = (0.3, 12.0)
 #: The ball's image area within these factors of a ball of radius R's, its axis ratio below
 #: `MAX_ELONGATION`.
 AREA_RANGE, MAX_ELONGATION = (0.35, 2.8), 2.0
+#: A ball's image is a disc (with its shadow, a bulge on it): its region, holes filled, covers
+#: at least this share of its convex hull.  A ball's shaded limb and its shadow alone, its lit
+#: side of the platter's colour, make a crescent that covers 0.5-0.75.
+MIN_SOLIDITY = 0.8
 SEED_HINT = "give the first frame's pixel with --ball-at U,V and --mark-at U,V"
 
 
@@ -59,6 +63,8 @@ class Candidate(NamedTuple):
     colour: NDArray[np.float64]
     contrast: float
     elongation: float
+    #: the share of its convex hull that it covers, its holes filled
+    solidity: float = 1.0
     #: distance from the axis in units of P if it turns rigidly with the platter, else nan
     turns_at: float = math.nan
     #: a part of a larger region, split from it by colour
@@ -137,7 +143,7 @@ def _candidate(lab_img, region, platter: Platter, origin) -> Candidate | None:
         float(area),
         colour,
         float(np.linalg.norm(colour - platter.colour)),
-        _shape(region),
+        *_shape(region),
     )
 
 
@@ -157,15 +163,19 @@ def _split(lab_img, region) -> list[NDArray[np.uint8]]:
     return parts
 
 
-def _shape(region: NDArray[np.uint8]) -> float:
-    """Axis ratio of a region, from its second moments."""
+def _shape(region: NDArray[np.uint8]) -> tuple[float, float]:
+    """Axis ratio of a region, from its second moments, and its solidity (`MIN_SOLIDITY`)."""
     m = cv2.moments(region, binaryImage=True)
     if m["m00"] < 3:
-        return 1.0
+        return 1.0, 1.0
     a, b, c = m["mu20"] / m["m00"], m["mu11"] / m["m00"], m["mu02"] / m["m00"]
     root = math.sqrt(max((a - c) ** 2 + 4 * b * b, 0.0))
     lo, hi = (a + c - root) / 2, (a + c + root) / 2
-    return math.sqrt(hi / max(lo, 1e-9))
+    contours, _ = cv2.findContours(region, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)
+    filled = sum(cv2.contourArea(k) + 0.5 * cv2.arcLength(k, True) for k in contours)
+    hull = cv2.convexHull(np.concatenate(contours))
+    solidity = filled / max(cv2.contourArea(hull) + 0.5 * cv2.arcLength(hull, True), 1.0)
+    return math.sqrt(hi / max(lo, 1e-9)), min(solidity, 1.0)
 
 
 def find(
@@ -372,7 +382,7 @@ def _seeded(lab_img, origin, platter: Platter, at, reach: float) -> Candidate | 
         float(stats[i][4]),
         np.median(pix, axis=0).astype(float),
         contrast,
-        _shape(region),
+        *_shape(region),
     )
 
 
@@ -384,6 +394,7 @@ def _choose_ball(others, pose, ball_radius) -> int | None:
         if c is not None
         and AREA_RANGE[0] < c.area / _area_at(pose, (c.u, c.v), ball_radius) < AREA_RANGE[1]
         and c.elongation < MAX_ELONGATION
+        and c.solidity >= MIN_SOLIDITY
     ]
     if not ok:
         return None

@@ -49,12 +49,14 @@ class Paths(NamedTuple):
 
 
 class _State:
-    """What is followed: the last position and the step per frame."""
+    """What is followed: the last position and the step per frame, known from the second
+    frame it is found on (the first is the frame of ``uv``)."""
 
     def __init__(self, uv: NDArray) -> None:
         self.last: NDArray = uv
         self.step: NDArray | None = None
         self.misses = 0
+        self.seen = False
 
     def predict(self) -> NDArray:
         """Where the last step leads (over at most `COAST` frames)."""
@@ -67,8 +69,9 @@ class _State:
         return None if self.step is None else float(np.hypot(*self.step))
 
     def found(self, uv: NDArray) -> None:
-        self.step = (uv - self.last) / (self.misses + 1)
-        self.last, self.misses = uv, 0
+        if self.seen:
+            self.step = (uv - self.last) / (self.misses + 1)
+        self.last, self.misses, self.seen = uv, 0, True
 
     def miss(self) -> None:
         self.misses += 1
@@ -98,8 +101,9 @@ class _Turning(_State):
         return np.linalg.solve(self.to_circle, p) + self.rim.centre
 
     def found(self, uv: NDArray) -> None:
-        step = self._polar(uv)[0] - self._polar(self.last)[0]
-        self.turn = ((step + math.pi) % (2 * math.pi) - math.pi) / (self.misses + 1)
+        if self.seen:
+            step = self._polar(uv)[0] - self._polar(self.last)[0]
+            self.turn = ((step + math.pi) % (2 * math.pi) - math.pi) / (self.misses + 1)
         super().found(uv)
 
 

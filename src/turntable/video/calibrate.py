@@ -13,12 +13,12 @@ length (ln f within 1 of ln of the image's width) and the roll (within 1 rad of 
 defined where the data cannot: a camera looking straight down, whose image does not depend
 on them.
 
-The lens's radial distortion k1 (`camera.Pose`) is measured on the mark's track alone:
-thousands of images, over several turns, of a point turning uniformly on one circle of the
-platter's plane, which a pinhole sees on an ellipse and a bending lens does not.  The rim's
-edge would pass its own bias to k1: up to a pixel on the near side, from the platter's side
-and its shadow.  The camera is fitted again with that k1 where the mark measures it to a
-tenth (`LENS_Z`); elsewhere the lens is a pinhole's.
+The lens's radial distortion k1 (`turntable.video.camera.Pose`) is measured on the mark's
+track alone: thousands of images, over several turns, of a point turning uniformly on one
+circle of the platter's plane, which a pinhole sees on an ellipse and a bending lens does
+not.  The rim's edge would pass its own bias to k1: up to a pixel on the near side, from the
+platter's side and its shadow.  The camera is fitted again with that k1 where the mark
+measures it to a tenth (``LENS_Z``); elsewhere the lens is a pinhole's.
 """
 
 from __future__ import annotations

@@ -303,7 +303,8 @@ def calibrate(
     platter_radius: float,
     rim_frames: int = 1,
 ) -> Calibration:
-    """Fit the camera, the mark's circle and Omega (see the module's docstring).
+    """Fit the camera (with the lens's k1 where the mark measures it), the mark's circle and
+    Omega (see the module's docstring).
 
     Parameters
     ----------

@@ -138,35 +138,17 @@ def platter_texture(
 
 
 def undistort(pose: Pose, u: NDArray, v: NDArray, k1: float) -> tuple[NDArray, NDArray]:
-    """Pinhole image points seen at the pixels (u, v) of a lens with radial distortion
-    x_d = x (1 + k1 r^2) (x, r normalised by the focal length): Newton's iterations on r."""
-    if k1 == 0:
-        return u, v
-    cx, cy = pose.principal
-    rd = np.hypot(u - cx, v - cy) / pose.focal
-    ru = rd.copy()
-    r_max = 1 / math.sqrt(-3 * k1) if k1 < 0 else np.inf  # where r (1 + k1 r^2) turns
-    for _ in range(8):
-        ru = np.clip(ru - (ru * (1 + k1 * ru**2) - rd) / (1 + 3 * k1 * ru**2), 0, 0.999 * r_max)
-    scale = np.where(rd > 0, ru / np.maximum(rd, 1e-300), 1.0)
-    return cx + (u - cx) * scale, cy + (v - cy) * scale
-
-
-def distort(pose: Pose, uv: ArrayLike, k1: float) -> NDArray[np.float64]:
-    """Pixels (..., 2) of a lens with radial distortion k1 that see the pinhole points ``uv``."""
-    uv = np.asarray(uv, dtype=float)
-    if k1 == 0:
-        return uv
-    c = np.asarray(pose.principal)
-    r2 = np.sum((uv - c) ** 2, axis=-1, keepdims=True) / pose.focal**2
-    return c + (uv - c) * (1 + k1 * r2)
+    """Pinhole image points seen at the pixels (u, v) of a lens with radial distortion k1
+    (`turntable.video.camera.undistort`)."""
+    uv = camera.undistort(pose._replace(k1=k1), np.stack([u, v], axis=-1))
+    return uv[..., 0], uv[..., 1]
 
 
 def image(pose: Pose, points: ArrayLike, k1: float) -> NDArray[np.float64]:
     """Pixels (n, 2) of lab points (n, 3) (in front of the camera)."""
     cam = (np.asarray(points, dtype=float) - camera.centre(pose)) @ camera.rotation(pose).T
     uv = pose.focal * cam[:, :2] / cam[:, 2:] + np.asarray(pose.principal)
-    return distort(pose, uv, k1)
+    return camera.distort(pose._replace(k1=k1), uv)
 
 
 def window(pose: Pose, points: ArrayLike, k1: float) -> tuple[slice, slice] | None:

@@ -6,7 +6,9 @@ distance d, its optical axis tilted by ``tilt`` from the downward vertical towar
 (the camera stands on the side of negative y), and turned by ``roll`` about that axis.
 Image coordinates (u, v) are in pixels, u to the right and v down, pixel centres at whole
 numbers; the principal point is the centre of the image and the pixels are square.  At
-zero tilt and roll, x points right in the image and y up.
+zero tilt and roll, x points right in the image and y up.  The lens may bend the pinhole's
+image radially (``Pose.k1``, a phone's barrel distortion): `project` and `back_project`
+include it.
 """
 
 from __future__ import annotations
@@ -22,7 +24,8 @@ __all__ = ["Pose", "back_project", "image_radius", "project", "sphere_centre"]
 
 class Pose(NamedTuple):
     """A camera: focal length (px), tilt and roll (rad), look-at point (m), distance (m),
-    image size (px)."""
+    image size (px), and its lens's radial distortion k1: a pinhole image point x (from the
+    principal point, in units of the focal length) is seen at x (1 + k1 |x|^2)."""
 
     focal: float
     tilt: float
@@ -30,6 +33,7 @@ class Pose(NamedTuple):
     look_at: tuple[float, float]
     distance: float
     size: tuple[int, int]  # (width, height)
+    k1: float = 0.0
 
     @property
     def principal(self) -> tuple[float, float]:
@@ -59,7 +63,8 @@ def intrinsic(pose: Pose) -> NDArray[np.float64]:
 
 
 def homography(pose: Pose, height: float = 0.0) -> NDArray[np.float64]:
-    """Return H (3 x 3) with (u, v, 1) ~ H (x, y, 1) for points of the plane z = height.
+    """Return H (3 x 3) with (u, v, 1) ~ H (x, y, 1) for points of the plane z = height,
+    (u, v) the pinhole's image (before the lens's distortion, `distort`).
 
     Notes
     -----
@@ -83,6 +88,42 @@ def apply(h: NDArray[np.float64], points: ArrayLike) -> NDArray[np.float64]:
         axis=-1,
     )
     return q / w
+
+
+def distort(pose: Pose, uv: ArrayLike) -> NDArray[np.float64]:
+    """Pixels (..., 2) at which the lens of ``pose`` shows the pinhole image points ``uv``."""
+    uv = np.asarray(uv, dtype=float)
+    if pose.k1 == 0:
+        return uv
+    c = np.asarray(pose.principal)
+    r2 = np.sum((uv - c) ** 2, axis=-1, keepdims=True) / pose.focal**2
+    return c + (uv - c) * (1 + pose.k1 * r2)
+
+
+def undistort(pose: Pose, pixels: ArrayLike) -> NDArray[np.float64]:
+    """Pinhole image points (..., 2) that the lens of ``pose`` shows at ``pixels``: Newton's
+    iterations on the radius (kept below the radius where the distortion turns back).
+
+    Examples
+    --------
+    >>> from turntable.video import camera
+    >>> pose = camera.Pose(1000.0, 0.3, 0.0, (0.0, 0.0), 0.4, (1280, 720), k1=-0.02)
+    >>> seen = camera.distort(pose, [[1100.0, 650.0]])
+    >>> print(seen.round(3), camera.undistort(pose, seen).round(9))
+    [[1097.27  648.278]] [[1100.  650.]]
+    """
+    pixels = np.asarray(pixels, dtype=float)
+    if pose.k1 == 0:
+        return pixels
+    u, v, k1 = pixels[..., 0], pixels[..., 1], pose.k1
+    cx, cy = pose.principal
+    rd = np.hypot(u - cx, v - cy) / pose.focal
+    ru = rd.copy()
+    r_max = 1 / math.sqrt(-3 * k1) if k1 < 0 else np.inf  # where r (1 + k1 r^2) turns
+    for _ in range(8):
+        ru = np.clip(ru - (ru * (1 + k1 * ru**2) - rd) / (1 + 3 * k1 * ru**2), 0, 0.999 * r_max)
+    scale = np.where(rd > 0, ru / np.maximum(rd, 1e-300), 1.0)
+    return np.stack([cx + (u - cx) * scale, cy + (v - cy) * scale], axis=-1)
 
 
 def project(pose: Pose, points: ArrayLike, height: float = 0.0) -> NDArray[np.float64]:
@@ -111,7 +152,7 @@ def project(pose: Pose, points: ArrayLike, height: float = 0.0) -> NDArray[np.fl
     >>> print(camera.project(pose, [[0.0, 0.0]]))
     [[639.5 359.5]]
     """
-    return apply(homography(pose, height), points)
+    return distort(pose, apply(homography(pose, height), points))
 
 
 def back_project(pose: Pose, pixels: ArrayLike, height: float = 0.0) -> NDArray[np.float64]:
@@ -139,11 +180,12 @@ def back_project(pose: Pose, pixels: ArrayLike, height: float = 0.0) -> NDArray[
     >>> print(camera.back_project(pose, uv, height=0.01).round(12))
     [[ 0.05 -0.02]]
     """
-    return apply(np.linalg.inv(homography(pose, height)), pixels)
+    return apply(np.linalg.inv(homography(pose, height)), undistort(pose, pixels))
 
 
 def rays(pose: Pose, u: ArrayLike, v: ArrayLike) -> NDArray[np.float64]:
-    """Unit directions (..., 3), in the lab frame, of the rays through image points."""
+    """Unit directions (..., 3), in the lab frame, of the rays through pinhole image points
+    (`undistort`)."""
     cx, cy = pose.principal
     d = np.stack(
         [
@@ -229,7 +271,8 @@ def sphere_centre(
     >>> print(f"{1000 * x:.3f} mm")
     99.934 mm
     """
-    uv = np.atleast_2d(np.asarray(pixels, dtype=float))
+    uv = undistort(pose, np.atleast_2d(np.asarray(pixels, dtype=float)))
+    pose = pose._replace(k1=0.0)
     rot, eye, f = rotation(pose), centre(pose), pose.focal
     xy = back_project(pose, uv, height=radius)
     for _ in range(iterations):

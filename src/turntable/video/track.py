@@ -344,7 +344,9 @@ def calibration_json(track: Track, ball_radius: float, platter_radius: float) ->
             "tilt_deg": "angle of the optical axis from the vertical",
             "axis_u_px, axis_v_px": "image of the rotation axis (u right, v down)",
             "homography": (
-                "(u, v, 1) ~ H (x, y, 1): plane z = 0, and the plane of the ball's centre z = R"
+                "(u, v, 1) ~ H (x, y, 1): plane z = 0, and the plane of the ball's centre z = R; "
+                "(u, v) before the lens's distortion: seen at (u, v) + k1 r^2 ((u, v) - centre), "
+                "r the distance from the image's centre over focal_px, k1 = lens_k1"
             ),
             "stderr": "from the least-squares fit of the camera to the rim and the mark",
         },

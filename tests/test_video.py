@@ -375,6 +375,7 @@ def test_checks_are_written_with_their_values(rendered, tmp_path, capsys) -> Non
         "mark_on_circle",
         "axis",
         "tilt",
+        "ball_found",
         "ball_moves",
         "ball_path",
         "ball_smooth",

@@ -12,6 +12,7 @@ and the option that would help.
   the rim's centre (within 3 % of P);
 - ``tilt``: the mark's circle and the rim are seen under the same tilt (their images' axis
   ratios within 0.03; when the mark has covered half a turn);
+- ``ball_found``: the ball is found on at least half of the frames (``MIN_FOUND``);
 - ``ball_moves``: the ball moves relative to the platter (the spread of its path in the
   platter's frame at least R / 2), not rigidly with it;
 - ``ball_path``: the ball does not jump: at most 2 % of its positions are more than R / 4
@@ -41,12 +42,19 @@ from turntable.video.platter import Ellipse, fit_ellipse
 MARK_RMS_PX = 2.0
 #: The ball's scatter about its smooth path: the limit (rms, in R) and the half-window (s).
 SMOOTH_R, SMOOTH_S = 0.06, 0.05
+#: The share of the frames the ball must be found on (on good tracks, at most a third are
+#: gaps: where it passes the mark or runs into a label of its colour).
+MIN_FOUND = 0.5
 #: What each check says when it fails, and the option that helps.
 HELP = {
     "rate": "it may not be the mark: give --mark-at U,V (or check --rpm)",
     "mark_on_circle": "it may not be the mark: give --mark-at U,V",
     "axis": "it may not be the mark: give --mark-at U,V",
     "tilt": "it may not be the mark: give --mark-at U,V",
+    "ball_found": (
+        "it may be of nearly the platter's colour: film it in more contrast with the platter, "
+        "or give --ball-at U,V"
+    ),
     "ball_moves": "it may be a mark or a label, not the ball: give --ball-at U,V",
     "ball_path": "it may have been taken for something else on the way: give --ball-at U,V",
     "ball_smooth": (
@@ -149,6 +157,14 @@ def checks(
             f"{tilts[1]:.1f} deg",
         )
     seen = np.isfinite(paths.ball[:, 0])
+    share = float(seen.mean())
+    put(
+        "ball_found",
+        share,
+        MIN_FOUND,
+        share >= MIN_FOUND,
+        f"the ball was found on {100 * share:.0f} % of the frames only",
+    )
     xy = camera.sphere_centre(cal.pose, paths.ball[seen], ball_radius)
     ts = cal.times(t[seen], paths.ball[seen, 1])
     z = (xy[:, 0] + 1j * xy[:, 1]) * np.exp(-1j * cal.omega * ts)

@@ -137,25 +137,18 @@ def platter_texture(
     return out
 
 
-def undistort(pose: Pose, u: NDArray, v: NDArray, k1: float) -> tuple[NDArray, NDArray]:
-    """Pinhole image points seen at the pixels (u, v) of a lens with radial distortion k1
-    (`turntable.video.camera.undistort`)."""
-    uv = camera.undistort(pose._replace(k1=k1), np.stack([u, v], axis=-1))
-    return uv[..., 0], uv[..., 1]
-
-
-def image(pose: Pose, points: ArrayLike, k1: float) -> NDArray[np.float64]:
-    """Pixels (n, 2) of lab points (n, 3) (in front of the camera)."""
+def image(pose: Pose, points: ArrayLike) -> NDArray[np.float64]:
+    """Pixels (n, 2) of lab points (n, 3) (in front of the camera), through its lens."""
     cam = (np.asarray(points, dtype=float) - camera.centre(pose)) @ camera.rotation(pose).T
     uv = pose.focal * cam[:, :2] / cam[:, 2:] + np.asarray(pose.principal)
-    return camera.distort(pose._replace(k1=k1), uv)
+    return camera.distort(pose, uv)
 
 
-def window(pose: Pose, points: ArrayLike, k1: float) -> tuple[slice, slice] | None:
+def window(pose: Pose, points: ArrayLike) -> tuple[slice, slice] | None:
     """The window (rows, columns) of the image around lab points (n, 3), or None if it
     is outside."""
     width, height = pose.size
-    uv = image(pose, points, k1)
+    uv = image(pose, points)
     (u0, v0), (u1, v1) = uv.min(axis=0), uv.max(axis=0)
     v0, v1 = max(math.floor(v0) - 2, 0), min(math.ceil(v1) + 3, height)
     u0, u1 = max(math.floor(u0) - 2, 0), min(math.ceil(u1) + 3, width)

@@ -204,7 +204,8 @@ class _Renderer:
         self.rng, self.light = np.random.default_rng(seed), _scene.light(scene)
         width, height = scene.size
         v, u = np.mgrid[0:height, 0:width].astype(float)
-        u, v_pin = _scene.undistort(pose, u, v, scene.lens_k1)
+        self.lens = lens = pose._replace(k1=scene.lens_k1)  # the pose: a pinhole's
+        u, v_pin = np.moveaxis(camera.undistort(lens, np.stack([u, v], axis=-1)), -1, 0)
         self.rays = camera.rays(pose, u, v_pin).astype(np.float32)
         self.eye = camera.centre(pose)
         xy = camera.back_project(pose, np.stack([u, v_pin], axis=-1))
@@ -245,7 +246,7 @@ class _Renderer:
             noise = np.round(noise * np.float32(scene.noise)).astype(np.int16)
             self.noise = np.repeat(noise, 4, axis=2)  # contiguous: faster to add
         self.colour = {c: _scene.rgb(getattr(scene, c), c) for c in _scene.COLOURS}
-        self._box = functools.partial(_scene.window, pose, k1=scene.lens_k1)  # lab points (n, 3)
+        self._box = functools.partial(_scene.window, lens)  # lab points (n, 3)
 
     def _dt(self, box: tuple[slice, slice]) -> NDArray:
         """Delay (rows, 1) of the exposure of the window's rows (rolling shutter), s."""
@@ -445,7 +446,7 @@ def render_video(
     if scene.readout:
         # the rolling shutter: the ball is seen later, as late as the row of its image
         middle = np.column_stack([xy[:, 0], sign * xy[:, 1], np.full(n, setup.radius)])
-        rows = np.clip(_scene.image(pose, middle, scene.lens_k1)[:, 1], 0, scene.size[1] - 1)
+        rows = np.clip(_scene.image(renderer.lens, middle)[:, 1], 0, scene.size[1] - 1)
         delay = renderer.row_dt * rows
         later = samples + np.repeat(delay, BLUR_SAMPLES)
         ball = positions(model, coefficient, state0, later, setup).reshape(n, BLUR_SAMPLES, 2)

@@ -170,6 +170,13 @@ def test_rpm_and_omega_agree_and_python_m_runs_the_same(
     assert ja["slipping"]["mu0"] == pytest.approx(jb["slipping"]["mu0"], rel=1e-9)
 
 
+def test_negative_numbers_in_scientific_notation_are_values() -> None:
+    args = cli._parser().parse_args(
+        ["fit", "f.csv", "--radius", "1e-2", "--axis", "-1e-05", "-2E-7"]
+    )
+    assert args.axis == [-1e-05, -2e-7]
+
+
 def test_plot(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     path, truth = _unseen_film(tmp_path, "rolling_resistance", 6)
     figure = tmp_path / "fit.png"

@@ -275,6 +275,7 @@ def measure(truth: dict[str, Any], path: Path, truth_file: Path) -> dict[str, An
         "omega_z": float((abs(cal.omega) - setup.omega) / cal.omega_stderr),
         "wrong": bool(rms > WRONG_RMS or abs(omega_error) > WRONG_OMEGA),
         "track_seconds": seconds,
+        "checks": {k: float(v["value"]) for k, v in track.checks.items()},
     }
     measured = film.Setup(setup.radius, abs(cal.omega), setup.k, (0.0, 0.0))
     result = fit.fit_film(track.film, measured, fit_axis=True)

@@ -331,6 +331,7 @@ def test_seeds_on_the_ball_and_the_mark_give_the_same_track(rendered, tmp_path, 
         pytest.param(("--mark-at", "ball"), "--mark-at", id="ball-seeded-as-mark"),
         pytest.param(("--rpm", "34"), "not at the given --rpm 34", id="rpm-2-percent-off"),
         pytest.param(("--ball-radius", "0.012"), "ball's image is", id="radius-half-again"),
+        pytest.param(("--ball-radius", "0.0104"), "ball's image is", id="radius-three-tenths-more"),
         pytest.param(("--ball-radius", "0.016"), "check --ball-radius", id="radius-twice"),
         pytest.param(("--mark-at", "3,3"), "--mark-at 3,3: nothing there", id="seed-on-nothing"),
     ],
@@ -429,17 +430,35 @@ def test_scenes_a_person_films_are_tracked(fields, tmp_path) -> None:
     assert track.mirrored == scene.clockwise
 
 
+def test_a_camera_looking_straight_down_is_placed_by_its_priors_and_says_so(tmp_path) -> None:
+    """At a tilt of 0 the image does not tell the camera's distance, which the ball's height
+    above the platter is seen from: the positions are within 0.05 R (but for which way x
+    points, a convention the tilt no longer sets), and a warning says how uncertain their
+    scale is."""
+    path = tmp_path / "down_SYNTHETIC.mp4"
+    truth = render_video(
+        path, "slipping", 2.0, STATE0, SETUP, SCENE._replace(tilt_deg=0.0), seed=11
+    )
+    track, warnings = track_video(path, RADIUS, PLATTER)
+    t = track.film.t + truth.film.t[0]
+    exact = np.interp(t, truth.film.t, truth.film.x) + 1j * np.interp(t, truth.film.t, truth.film.y)
+    got = track.film.x + 1j * track.film.y
+    got *= np.exp(1j * np.angle(np.sum(exact * np.conj(got))))
+    assert np.sqrt(np.mean(np.abs(got - exact) ** 2)) < 0.05 * RADIUS
+    assert any("looks nearly straight down" in w for w in warnings)
+
+
 def test_a_phone_s_lens_is_measured_on_the_mark_s_track(tmp_path) -> None:
-    """A phone's barrel distortion (k1 = -0.02) at a tilt of 35 degrees, 1280x720 at 60
-    frames/s for 2.5 s: the mark's track measures k1, and the positions are within 0.008 R
-    (0.018 R with the lens left out)."""
+    """A phone's barrel distortion (k1 = -0.04) at a tilt of 35 degrees, 960x540 at 60
+    frames/s for 2 s: the mark's track measures k1, and the positions are within 0.012 R
+    (0.036 R with the lens left out)."""
     path = tmp_path / "lens_SYNTHETIC.mp4"
-    scene = SCENE._replace(lens_k1=-0.02, tilt_deg=35.0, size=(1280, 720), fps=60.0, duration=2.5)
+    scene = SCENE._replace(lens_k1=-0.04, tilt_deg=35.0, size=(960, 540), fps=60.0, duration=2.0)
     truth = render_video(path, "slipping", 2.0, STATE0, SETUP, scene, seed=11)
     track, _ = track_video(path, RADIUS, PLATTER)
-    assert np.sqrt(np.mean(position_errors(track, truth) ** 2)) < 0.008 * RADIUS
+    assert np.sqrt(np.mean(position_errors(track, truth) ** 2)) < 0.012 * RADIUS
     cal = track.calibration
-    assert abs(cal.derived["lens_k1"] + 0.02) < 3 * cal.stderr["lens_k1"]
+    assert abs(cal.derived["lens_k1"] + 0.04) < 3 * cal.stderr["lens_k1"]
 
 
 @pytest.mark.parametrize(

@@ -35,6 +35,10 @@ __all__ = ["FirstLook", "Track", "track_video"]
 MIN_MARK_FRAMES = 10
 #: The platter differs from what surrounds it by at least this (CIELAB distance).
 MIN_RIM_CONTRAST = 8.0
+#: A warning where the camera's distance, which the ball's height above the platter is seen
+#: from, is known so poorly (a camera looking nearly straight down) that the positions at
+#: the rim could move by more than this (ball radii).
+DISTANCE_WARNING_R = 0.05
 
 
 class FirstLook(NamedTuple):
@@ -268,6 +272,16 @@ def _finish(info, paths: Paths, cal, results, look, ball_radius, platter_radius,
         warnings.append(
             f"the ball was not found, or was next to the mark, on {len(lost)} of {t.size} frames "
             f"({frame_ranges(lost)}): they are gaps of the film"
+        )
+    share = cal.stderr["distance_m"] / cal.derived["distance_m"]  # of ln d
+    scale = ball_radius / cal.derived["distance_m"] * share
+    if platter_radius * scale > DISTANCE_WARNING_R * ball_radius:
+        warnings.append(
+            f"the camera looks nearly straight down (tilt {cal.derived['tilt_deg']:.1f} deg): "
+            f"its distance is known to +-{100 * share:.0f} % only, and so the positions may be "
+            f"scaled about the axis by up to +-{100 * scale:.2g} % (R above the platter, seen "
+            "from an uncertain distance; a fit of friction does not depend on it); a tilt of "
+            "10 degrees or more measures the distance"
         )
     omega = abs(cal.omega)
     if rpm is not None:

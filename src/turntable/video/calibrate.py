@@ -12,8 +12,8 @@ uniform turning fixes the rest, and the axis's image with it.  Priors keep the f
 length (ln f within 0.3 of ln of the image's width: a field of view of 40 to 70 degrees) and
 the roll (within 1 rad of its start) defined where the data cannot: a camera looking
 straight down, whose image does not depend on them.  The rim's ellipse is weighed as known to
-half a pixel at best (``RIM_BIAS_PX``): weighed as its many points would have it, its small
-biases set the tilt of such a camera, and the rest of the camera follows them.
+a thousandth of its size at best (``RIM_BIAS``): weighed as its many points would have it,
+its small biases set the tilt of such a camera, and the rest of the camera follows them.
 
 The lens's radial distortion k1 (`turntable.video.camera.Pose`) is measured on the mark's
 track alone: thousands of images, over several turns, of a point turning uniformly on one
@@ -46,10 +46,11 @@ PRIOR_LOG_FOCAL = 0.3
 RIM_PRIOR_LOG_FOCAL = 0.01
 PRIOR_ROLL = 1.0
 PRIOR_READOUT = 2.0
-#: The rim's edge is biased by up to a pixel (the platter's side beneath it, its shading, its
-#: shadow), in a shape an ellipse takes up: however many its points, the ellipse they give is
-#: known to this (px) at best.  Weighed more, it tilts a camera that looks straight down.
-RIM_BIAS_PX = 0.5
+#: The rim's edge is biased (the platter's side beneath it, its shading, its shadow) in a
+#: shape an ellipse takes up: stretched by 0.11-0.14 % of its radius in MuJoCo's renders, lit
+#: from one side.  However many its points, the ellipse they give is known to this share of
+#: its semi-major axis at best; weighed more, it tilts a camera that looks straight down.
+RIM_BIAS = 0.001
 #: The lens's k1 is kept if the mark measures it to a tenth (`LENS_Z` standard errors from 0,
 #: three times the 3.3 to which the mark's own small biases put the k1 of the benchmark's
 #: distortion-free lenses) and within +-`MAX_K1` (a phone's main camera; a wide-angle or
@@ -237,7 +238,9 @@ def _fit(prob: _Problem, b0: float, roll0: float) -> tuple[NDArray, NDArray]:
         widen = math.sqrt(prob.rim_frames * (1 + r1) / (1 - min(r1, 0.99)))
         prob.sigma_rim *= max(float(np.sqrt(np.mean(rim_res**2))), 1e-3) * (widen if _ else 1.0)
         if _:
-            prob.sigma_rim = max(prob.sigma_rim, RIM_BIAS_PX * math.sqrt(rim_res.size / 2))
+            prob.sigma_rim = max(
+                prob.sigma_rim, RIM_BIAS * prob.ellipse.a * math.sqrt(rim_res.size / 2)
+            )
         prob.sigma_mark *= max(float(np.sqrt(np.mean(prob.mark(theta) ** 2))), 1e-3)
     return _solve(prob.all, theta)
 

@@ -166,7 +166,7 @@ def track_video(
     >>> omega = abs(track.calibration.omega)
     >>> print(f"{track.film.t.size} frames, Omega {omega:.3f} rad/s, "
     ...       f"rms error {np.sqrt(np.mean(err**2)) / 0.008:.2f} R")
-    31 frames, Omega 4.708 rad/s, rms error 0.03 R
+    31 frames, Omega 4.708 rad/s, rms error 0.04 R
     """
     with Video(path) as video:
         try:

@@ -64,21 +64,38 @@ class MujocoScene:
         Vertical field of view, degrees (36 degrees: 60 across a 16:9 image, a phone's).
         The camera's distance is chosen so that the platter's image spans 85 % of the
         image's height (or 90 % of its width) and is centred.
+    zoom_out, pan_deg : float
+        Then the camera is moved back along its optical axis to ``zoom_out`` times its
+        distance from the plane z = 0 (the platter smaller in the image) and turned by
+        ``pan_deg`` degrees about its own downward axis (the platter off the image's centre).
     ball_rgba : tuple of float
         Colour of the ball, RGBA in 0-1.
     ball_specular, ball_shininess : float
         MuJoCo's material specular (0-1) and shininess (0-1) of the ball.
+    ball_checker : tuple of two RGB, optional
+        The ball painted with MuJoCo's builtin checker of these two colours (0-1; a cube
+        texture, 64 texels a side), times ``ball_rgba``; None: plain.
     platter_rgba, table_rgba : tuple of float
         Colours of the platter (top and side) and of the table under it.
+    platter_specular, platter_shininess : float
+        The platter's material specular and shininess (0.9 and 0.6: glossy).
+    table_wood : bool
+        The table textured as wood (a brown gradient with random darker marks, repeated
+        6 x 6), times ``table_rgba``.
     mark_shape : {"strip", "dot"}
         The mark near the rim, turning with the platter: a thin box (a strip of tape) or a
         thin cylinder (a dot).
     mark_size : tuple of float
-        Strip: (length, width), m, the length tangential; dot: (diameter, unused).
+        Strip: (length, width), m; dot: (diameter, unused).
+    mark_along : {"tangential", "radial"}
+        Direction of a strip's length.
     mark_at : float
         Distance of the mark's centre from the axis, in units of P.
     mark_rgba : tuple of float
         Colour of the mark.
+    second_dot : tuple of float, optional
+        (x, y, diameter), m, of a second dot of the mark's colour on the platter (x towards
+        the mark); None: none.
     label_radius : float
         Radius of the label at the platter's centre, in units of P (0: none).
     label_rgba : tuple of float
@@ -128,12 +145,18 @@ class MujocoScene:
     ball_rgba: RGBA = (0.95, 0.95, 0.95, 1.0)
     ball_specular: float = 0.3
     ball_shininess: float = 0.3
+    ball_checker: tuple[tuple[float, float, float], tuple[float, float, float]] | None = None
     platter_rgba: RGBA = (0.18, 0.18, 0.18, 1.0)
+    platter_specular: float = 0.05
+    platter_shininess: float = 0.1
     table_rgba: RGBA = (0.55, 0.45, 0.35, 1.0)
+    table_wood: bool = False
     mark_shape: str = "dot"
     mark_size: tuple[float, float] = (0.008, 0.008)
+    mark_along: str = "tangential"
     mark_at: float = 0.88
     mark_rgba: RGBA = (0.92, 0.92, 0.92, 1.0)
+    second_dot: tuple[float, float, float] | None = None
     label_radius: float = 0.0
     label_rgba: RGBA = (0.8, 0.15, 0.15, 1.0)
     light_azimuth_deg: float = -121.0
@@ -150,6 +173,8 @@ class MujocoScene:
     blur_samples: int = 1
     crf: int = 18
     clockwise: bool = False
+    zoom_out: float = 1.0
+    pan_deg: float = 0.0
 
 
 class Camera(NamedTuple):
@@ -226,10 +251,20 @@ def _camera(scene: MujocoScene) -> Camera:
     cam = Camera(
         tuple(np.r_[look, 0.0] - dist * view), tuple(map(tuple, axes)), focal, (width, height)
     )
-    return cam._replace(
+    cam = cam._replace(
         position=tuple(turn @ np.asarray(cam.position)),
         axes=tuple(map(tuple, np.asarray(cam.axes) @ turn.T)),
     )
+    if scene.zoom_out == 1 and scene.pan_deg == 0:
+        return cam
+    axes, pos = np.asarray(cam.axes), np.asarray(cam.position)
+    if scene.zoom_out != 1:
+        s = -pos[2] / axes[2][2]  # along the optical axis to the plane z = 0
+        pos = (pos + s * axes[2]) - scene.zoom_out * s * axes[2]
+    if scene.pan_deg != 0:
+        c, d = math.cos(math.radians(scene.pan_deg)), math.sin(math.radians(scene.pan_deg))
+        axes = np.array([c * axes[0] + d * axes[2], axes[1], -d * axes[0] + c * axes[2]])
+    return cam._replace(position=tuple(pos), axes=tuple(map(tuple, axes)))
 
 
 def _f(*xs: float) -> str:
@@ -245,6 +280,10 @@ def scene_xml(scene: MujocoScene, radius: float, cam: Camera) -> str:
     film = 1e-4  # half thickness of the tape and the label, m: just above the surface
     if scene.mark_shape == "strip":
         length, width = scene.mark_size
+        if scene.mark_along == "radial":
+            length, width = width, length
+        elif scene.mark_along != "tangential":
+            raise ValueError(f"mark_along: 'tangential' or 'radial'; got {scene.mark_along!r}")
         mark = (f'<geom type="box" size="{_f(width / 2, length / 2, film)}" '
                 f'pos="{_f(scene.mark_at * p, 0, film)}" material="mark"/>')  # fmt: skip
     elif scene.mark_shape == "dot":
@@ -256,6 +295,21 @@ def scene_xml(scene: MujocoScene, radius: float, cam: Camera) -> str:
     if scene.label_radius > 0:
         label = (f'<geom type="cylinder" size="{_f(scene.label_radius * p, film / 2)}" '
                  f'pos="{_f(0, 0, film / 2)}" material="label"/>')  # fmt: skip
+    if scene.second_dot is not None:
+        x, y, diameter = scene.second_dot
+        label += (f'\n      <geom type="cylinder" size="{_f(diameter / 2, film)}" '
+                  f'pos="{_f(x, y, film)}" material="mark"/>')  # fmt: skip
+    ball = table = ""  # textures, and their use by the materials
+    if scene.ball_checker is not None:
+        ball = ('<texture name="ball" type="cube" builtin="checker" '
+                f'rgb1="{_f(*scene.ball_checker[0])}" rgb2="{_f(*scene.ball_checker[1])}" '
+                'width="64" height="64"/>\n    <material name="ball" texture="ball"')  # fmt: skip
+    if scene.table_wood:
+        table = ('<texture name="table" type="2d" builtin="gradient" rgb1="0.72 0.52 0.32" '
+                 'rgb2="0.55 0.38 0.22" width="512" height="512" mark="random" random="0.3" '
+                 'markrgb="0.42 0.27 0.15"/>\n    '
+                 '<material name="table" texture="table" texrepeat="6 6"')  # fmt: skip
+    shine = f'specular="{_f(scene.platter_specular)}" shininess="{_f(scene.platter_shininess)}"'
     az, el = math.radians(scene.light_azimuth_deg), math.radians(scene.light_elevation_deg)
     towards = np.array([math.cos(el) * math.cos(az), math.cos(el) * math.sin(az), math.sin(el)])
     right, down, _ = cam.axes
@@ -280,10 +334,10 @@ def scene_xml(scene: MujocoScene, radius: float, cam: Camera) -> str:
   </visual>
   <asset>
     <mesh name="platter" vertex="{platter}"/>
-    <material name="ball" rgba="{_f(*scene.ball_rgba)}"
+    {ball or '<material name="ball"'} rgba="{_f(*scene.ball_rgba)}"
               specular="{_f(scene.ball_specular)}" shininess="{_f(scene.ball_shininess)}"/>
-    <material name="platter" rgba="{_f(*scene.platter_rgba)}" specular="0.05" shininess="0.1"/>
-    <material name="table" rgba="{_f(*scene.table_rgba)}" specular="0" shininess="0"/>
+    <material name="platter" rgba="{_f(*scene.platter_rgba)}" {shine}/>
+    {table or '<material name="table"'} rgba="{_f(*scene.table_rgba)}" specular="0" shininess="0"/>
     <material name="mark" rgba="{_f(*scene.mark_rgba)}" specular="0.05" shininess="0.1"/>
     <material name="label" rgba="{_f(*scene.label_rgba)}" specular="0.05" shininess="0.1"/>
   </asset>

@@ -67,6 +67,11 @@ GREYS = {"white": (240, 240, 235), "black": (25, 25, 28), "steel": (170, 172, 17
 COLOURS = [(200, 30, 30), (235, 120, 20), (30, 80, 200), (40, 160, 60), (230, 200, 40)]
 
 
+def rgba(c: tuple[float, ...]) -> tuple[float, ...]:
+    """MuJoCo's colour (0-1, opaque) of an RGB colour in 0-255."""
+    return (*(x / 255 for x in c), 1.0)
+
+
 def _colour(rng: np.random.Generator) -> tuple[float, ...]:
     return tuple(float(c) for c in COLOURS[rng.integers(len(COLOURS))])
 
@@ -139,9 +144,6 @@ def _camouflage(rng):
 
 
 def _mujoco(rng):
-    def rgba(c):
-        return (*(x / 255 for x in c), 1.0)
-
     ball = [GREYS["white"], GREYS["steel"], *COLOURS][rng.integers(2 + len(COLOURS))]
     dark = rng.random() < 0.5
     platter = (35.0, 35.0, 40.0) if dark else (150.0, 150.0, 155.0)
@@ -182,16 +184,38 @@ FAMILIES = {
 }
 
 
-def draw(rng: np.random.Generator, i: int, family: str, level: float) -> dict[str, Any]:
-    """The ball, the camera and the scene of video ``i`` of a family."""
+def draw(
+    rng: np.random.Generator,
+    i: int,
+    family: str,
+    level: float,
+    *,
+    radius: float | None = None,
+    platter: float = PLATTER,
+    rpm: float = RPM,
+    duration: float | None = None,
+    r0range: tuple[float, float] | None = None,
+    scene: dict[str, Any] | None = None,
+) -> dict[str, Any]:
+    """The ball, the camera and the scene of video ``i`` of a family.
+
+    The keyword arguments change the family's video, its random draws left as they are: the
+    ball's radius (m), the platter's, its rpm, the duration (s), the range of the ball's
+    initial distance from the axis (m; by default 4-9 cm times P / 15 cm) and fields of the
+    scene (``fps`` also sets the frame rate at which the coefficient must be measurable).
+    """
     make, within, renderer = FAMILIES[family]
-    fields, duration = make(rng)
+    fields, drawn = make(rng)
+    fields |= scene or {}
+    duration = duration or drawn
     model = fit.MODELS[i % 2]
-    radius = float(rng.uniform(0.006, 0.010))
-    setup = film.Setup(radius, film.rpm_to_omega(RPM), 0.4, (0.0, 0.0))
+    drawn_radius = float(rng.uniform(0.006, 0.010))
+    radius = radius or drawn_radius
+    setup = film.Setup(radius, film.rpm_to_omega(rpm), 0.4, (0.0, 0.0))
     camera = film.Camera(fields.get("fps", 240.0), NOISE, duration)
+    lo_r0, hi_r0 = r0range or (0.04 * platter / PLATTER, 0.09 * platter / PLATTER)
     while True:
-        r0, a0 = rng.uniform(0.04, 0.09), rng.uniform(0, 2 * math.pi)
+        r0, a0 = rng.uniform(lo_r0, hi_r0), rng.uniform(0, 2 * math.pi)
         v = rng.normal(0.0, 0.03, 2)
         z0 = film.state_from_si([r0 * math.cos(a0), r0 * math.sin(a0)], v, [0.0, 0.0], setup)
         if model == "rolling_resistance":
@@ -202,7 +226,7 @@ def draw(rng: np.random.Generator, i: int, family: str, level: float) -> dict[st
             xy = fit.positions(model, c, z0, np.linspace(0, duration + 0.01, 400), setup)
         except ValueError:
             continue
-        if np.max(np.hypot(xy[:, 0], xy[:, 1])) > PLATTER - 2.5 * radius:
+        if np.max(np.hypot(xy[:, 0], xy[:, 1])) > platter - 2.5 * radius:
             continue  # the ball would reach the rim
         se = fit.predicted_stderr(model, c, z0, setup, camera)
         if se / c < level:
@@ -218,7 +242,7 @@ def draw(rng: np.random.Generator, i: int, family: str, level: float) -> dict[st
         "size": (1280, 720),
         "fps": 240.0,
         "duration": duration,
-        "platter_radius": PLATTER,
+        "platter_radius": platter,
         "clockwise": bool(rng.random() < 1 / 3),
     } | fields
     return {"family": family, "within_guide": within, "renderer": renderer, "model": model,
@@ -254,7 +278,7 @@ def measure(truth: dict[str, Any], path: Path, truth_file: Path) -> dict[str, An
             "radius_m": setup.radius, "frames": int(true["t"].size)}  # fmt: skip
     start = time.perf_counter()
     try:
-        track, _ = track_video(path, setup.radius, PLATTER)
+        track, _ = track_video(path, setup.radius, scene["platter_radius"])
     except VideoError as exc:
         return row | {"tracked": False, "refusal": str(exc).split(": ", 1)[1], "wrong": False}
     seconds = time.perf_counter() - start
@@ -327,10 +351,16 @@ def summary(rows: list[dict[str, Any]]) -> dict[str, Any]:
     }
 
 
-def run(per_family: int, workers: int, folder: Path, families: list[str]) -> dict[str, Any]:
+def reliable_level() -> float:
+    """The relative standard error up to which a coefficient counts as measurable (Fig. 8's
+    ``reliable_relative_error`` of the configuration)."""
     config: dict[str, Any] = {}
     validate(config, ROOT / "workflow" / "schemas" / "config.schema.yaml")
-    level = config["fig8_measurability"]["reliable_relative_error"]
+    return config["fig8_measurability"]["reliable_relative_error"]
+
+
+def run(per_family: int, workers: int, folder: Path, families: list[str]) -> dict[str, Any]:
+    level = reliable_level()
     rng = np.random.default_rng(2026)
     count = {f: per_family if FAMILIES[f][1] else max(per_family // 2, 2) for f in families}
     truths = [draw(rng, i, f, level) for f in families for i in range(count[f])]

@@ -46,10 +46,9 @@ PRIOR_LOG_FOCAL = 0.3
 RIM_PRIOR_LOG_FOCAL = 0.01
 PRIOR_ROLL = 1.0
 PRIOR_READOUT = 2.0
-#: The rim's edge is biased (the platter's side beneath it, its shading, its shadow) in a
-#: shape an ellipse takes up: stretched by 0.11-0.14 % of its radius in MuJoCo's renders, lit
-#: from one side.  However many its points, the ellipse they give is known to this share of
-#: its semi-major axis at best; weighed more, it tilts a camera that looks straight down.
+#: The share of its semi-major axis to which the rim's ellipse is known at best, however many
+#: its points: its edge (the platter's side, shading, shadow) is biased in a shape an ellipse
+#: takes up, stretched by 0.11-0.14 % of its radius in MuJoCo's renders lit from one side.
 RIM_BIAS = 0.001
 #: The lens's k1 is kept if the mark measures it to a tenth (`LENS_Z` standard errors from 0,
 #: three times the 3.3 to which the mark's own small biases put the k1 of the benchmark's
@@ -237,10 +236,9 @@ def _fit(prob: _Problem, b0: float, roll0: float) -> tuple[NDArray, NDArray]:
         r1 = max(_lag1(rim_res[:, None]), 0.0)
         widen = math.sqrt(prob.rim_frames * (1 + r1) / (1 - min(r1, 0.99)))
         prob.sigma_rim *= max(float(np.sqrt(np.mean(rim_res**2))), 1e-3) * (widen if _ else 1.0)
-        if _:
-            prob.sigma_rim = max(
-                prob.sigma_rim, RIM_BIAS * prob.ellipse.a * math.sqrt(rim_res.size / 2)
-            )
+        if _:  # each of the ellipse's numbers known to RIM_BIAS at best
+            floor = RIM_BIAS * prob.ellipse.a * math.sqrt(rim_res.size / 2)
+            prob.sigma_rim = max(prob.sigma_rim, floor)
         prob.sigma_mark *= max(float(np.sqrt(np.mean(prob.mark(theta) ** 2))), 1e-3)
     return _solve(prob.all, theta)
 

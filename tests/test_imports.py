@@ -9,6 +9,8 @@ on ``turntable.fit`` too (but a module does not depend on the packages it is par
 from __future__ import annotations
 
 import ast
+import subprocess
+import sys
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -115,3 +117,17 @@ def test_a_local_import_back_is_a_cycle(tmp_path: Path) -> None:
     ]
     (pkg / "film.py").write_text("")
     assert find_cycle(import_graph(pkg)) == []
+
+
+@pytest.mark.parametrize(
+    "module",
+    ["turntable", "turntable.fit", "turntable.claims", "turntable.campaign", "turntable.cli"],
+)
+def test_importing_loads_no_heavy_library(module: str) -> None:
+    """scipy, sympy and matplotlib cost 0.3-0.7 s of CPU each to import, in every one of the
+    build's processes that imports them; these modules import them where they are used."""
+    code = f"import sys, {module}; print(*sys.modules)"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    loaded = {name.split(".")[0] for name in out.stdout.split()}
+    assert "numpy" in loaded
+    assert loaded & {"scipy", "sympy", "matplotlib"} == set()

@@ -8,7 +8,6 @@ from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
-from scipy.optimize import brentq
 
 import turntable as tt
 from turntable import rolling
@@ -144,6 +143,8 @@ def _crossover(
     if idx.size != 1:
         return None
     i = int(idx[0])
+
+    from scipy.optimize import brentq
 
     def f(lm: float) -> float:
         return float(ratios(10.0**lm, k)[name]) / level - 1.0

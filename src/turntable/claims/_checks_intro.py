@@ -6,7 +6,6 @@ import math
 from typing import Any
 
 import numpy as np
-import scipy.linalg
 from numpy.typing import NDArray
 
 import turntable as tt
@@ -31,6 +30,8 @@ def _no_slip_run(z0: NDArray[np.float64], k: float, t: NDArray[np.float64]) -> d
     ball's angular velocity vector (max |w(t) - w(0)| / max |w|) and of its magnitude, and
     the largest relative deviation of the orbital rate from k/(k+1).
     """
+    import scipy.linalg
+
     big = con.no_slip_matrix(k)
     z = np.array([scipy.linalg.expm(big * ti) @ z0 for ti in t])
     rc = (con.momentum_matrix(k) @ z0) / k  # at rest (v = 0) the momentum is k w = k r_c
@@ -241,6 +242,8 @@ def _persistent_slip(mu0: float, k: float) -> float:
     ),
 )
 def _scaling(p: dict[str, Any]) -> Outcome:
+    import scipy.linalg
+
     k = p["k_paper"]
     radius = p["ball_radius"]
     mass = ball_mass(radius, p["ball_density"])

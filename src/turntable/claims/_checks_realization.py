@@ -5,7 +5,6 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
-import scipy.linalg
 
 import turntable as tt
 from turntable import reference as ref
@@ -20,6 +19,8 @@ def _slow_projector(big: np.ndarray, mu: float) -> tuple[np.ndarray, np.ndarray,
     and lambda_{1,2}); the fast one those below (lambda_{3,4}, real part ~ -2 mu). Both come
     from ordered real Schur forms; the projector is along the fast subspace.
     """
+    import scipy.linalg
+
     t_slow, z_slow, n_slow = scipy.linalg.schur(big, output="real", sort=lambda x, _y: x > -mu)
     _, z_fast, n_fast = scipy.linalg.schur(big, output="real", sort=lambda x, _y: x <= -mu)
     slow, fast = z_slow[:, :n_slow], z_fast[:, :n_fast]
@@ -58,6 +59,8 @@ def _slow_projector(big: np.ndarray, mu: float) -> tuple[np.ndarray, np.ndarray,
     ),
 )
 def _realization(p: dict[str, Any]) -> Outcome:
+    import scipy.linalg
+
     mu0s = sorted(p["mu0_limit"])
     slip = con.slip_matrix()
     constraint = scipy.linalg.null_space(slip)

@@ -5,7 +5,6 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
-import sympy as sp
 
 import turntable as tt
 from turntable import reference as ref
@@ -42,6 +41,8 @@ from turntable.claims._core import (
     ),
 )
 def _char_poly(p: dict[str, Any]) -> Outcome:
+    import sympy as sp
+
     residual = ref.symbolic_char_poly_residual()
     big, s_mu0, s_k = ref.symbolic_matrix()
     fn = sp.lambdify((s_mu0, s_k), big, "numpy")

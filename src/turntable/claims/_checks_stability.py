@@ -5,7 +5,6 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
-import scipy.optimize
 
 import turntable as tt
 from turntable import reference as ref
@@ -168,6 +167,8 @@ def _unstable_focus(p: dict[str, Any]) -> Outcome:
     source="project",
 )
 def _alpha1_peak(p: dict[str, Any]) -> Outcome:
+    import scipy.optimize
+
     def neg_growth(log_mu0: float, k: float) -> float:
         return -float(np.linalg.eigvals(ref.matrix_from_equations(np.exp(log_mu0), k)).real.max())
 

@@ -28,7 +28,6 @@ from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
-from scipy.optimize import brentq, least_squares
 
 from turntable import _validate
 from turntable.film import Film, Setup, check_setup
@@ -154,6 +153,8 @@ class _Fitter:
         # Levenberg-Marquardt (MINPACK): its own small QR, no multithreaded LAPACK call per
         # step, which on a busy machine costs far more than the arithmetic.  Beyond BOUNDS
         # the coefficient is held at the bound (zero derivative), where the fit then stops.
+        from scipy.optimize import least_squares
+
         with np.errstate(all="ignore"):
             return least_squares(
                 fun,
@@ -185,6 +186,8 @@ def _limit(fitter: _Fitter, theta: NDArray[np.float64], rss: float, bound: str) 
     and an upper limit at the lower one; the other end of `BOUNDS` if the film does not
     constrain the coefficient at all.
     """
+    from scipy.optimize import brentq
+
     lay = fitter.lay
     sigma2 = rss / max(fitter.n_obs - lay.size, 1)
     target = max(Z95_ONE_SIDED**2 * sigma2, fitter.rss_floor)

@@ -16,7 +16,6 @@ from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import NDArray
-from scipy.optimize import nnls
 
 from turntable.fit.models import N_STATE, _axis_free, _check_model, _full_state, _solve
 
@@ -172,6 +171,8 @@ def slow_noise(jac: NDArray[np.float64], residuals: NDArray[np.float64]) -> tupl
     of 2 n products, of variance 2 n white^2) is none.  ``jac`` has a row per coordinate,
     frame by frame; ``residuals`` shape (n, 2).
     """
+    from scipy.optimize import nnls
+
     n = residuals.shape[0]
     lags = max(n // 4, 1)
     size = 1 << (n + lags).bit_length()

@@ -19,7 +19,6 @@ import math
 
 import numpy as np
 from numpy.typing import NDArray
-from scipy.optimize import minimize_scalar
 
 from turntable import rolling
 from turntable.fit.models import BOUNDS, _axis_free
@@ -158,6 +157,8 @@ def start_values(
     >>> print(f"{coefficient:.3f}")
     0.020
     """
+    from scipy.optimize import minimize_scalar
+
     constant = _axis_free(model, fit_axis)
     lo, hi = (math.log(b) for b in BOUNDS[model])
     grid = np.linspace(lo, hi, round((hi - lo) / math.log(10.0) * GRID_PER_DECADE) + 1)

@@ -10,13 +10,14 @@ import functools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 import mpmath
 import numpy as np
-import scipy.linalg
-import sympy as sp
 from numpy.typing import ArrayLike, NDArray
+
+if TYPE_CHECKING:
+    import sympy as sp
 
 #: Inertia ratio of a homogeneous ball.
 K_BALL = 2.0 / 5.0
@@ -88,6 +89,8 @@ def symbolic() -> Symbolic:
     ``quartic`` is det(lambda I - L) / lambda^2 as a polynomial in lambda
     (the division is exact; `tests/test_spectrum.py` checks it).
     """
+    import sympy as sp
+
     mu0, k, lam = sp.symbols("mu0 k lambda", positive=True)
     i2 = sp.eye(2)
     j = sp.Matrix([[0, -1], [1, 0]])
@@ -119,6 +122,8 @@ def symbolic_char_poly_residual() -> str:
     L is `symbolic_matrix`; P4, mu and eps are typed from (2.1)-(2.2).  The
     result is ``"0"`` exactly when (2.1) holds for every mu0 > 0 and k > 0.
     """
+    import sympy as sp
+
     big, mu0, k = symbolic_matrix()
     lam = sp.Symbol("lambda")
     det = (lam * sp.eye(6) - big).det(method="berkowitz")
@@ -130,6 +135,8 @@ def symbolic_char_poly_residual() -> str:
 
 @functools.cache
 def _matrix_function() -> Any:
+    import sympy as sp
+
     s = symbolic()
     return sp.lambdify((s.mu0, s.k), s.L, modules="numpy")
 
@@ -224,6 +231,8 @@ def float_spectrum(matrix: NDArray[np.float64]) -> MpSpectrum:
 
 @functools.cache
 def _quartic_coefficients() -> Any:
+    import sympy as sp
+
     s = symbolic()
     return sp.lambdify((s.mu0, s.k), s.quartic.all_coeffs(), modules="mpmath")
 
@@ -306,6 +315,8 @@ def expm_solution(matrix: NDArray[np.float64], z0: ArrayLike, t: ArrayLike) -> N
     uniform grid, once for the first time and once for the step, which is
     then applied repeatedly.
     """
+    import scipy.linalg
+
     z0 = np.asarray(z0, dtype=float)
     t = np.asarray(t, dtype=float)
     steps = np.diff(t)

@@ -99,13 +99,6 @@ def shared_build(tmp_path_factory: pytest.TempPathFactory, worker_id: str) -> tu
     return build_once(shared_dir(tmp_path_factory, worker_id), "build", _build)
 
 
-def clean_build(tmp_path_factory: pytest.TempPathFactory, worker_id: str) -> Path:
-    """The directory of the build, which succeeded."""
-    workdir, record = shared_build(tmp_path_factory, worker_id)
-    assert record["build_returncode"] == 0, record["build_log"]
-    return workdir
-
-
 def job_counts(plan: str) -> dict[str, int]:
     """The job table of a dry run ("Job stats"): {rule: count}, without the total."""
     counts: dict[str, int] = {}

@@ -15,7 +15,9 @@ for _name in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_name, "1")
 
 import functools  # noqa: E402
-from collections.abc import Callable, Sequence  # noqa: E402
+import threading  # noqa: E402
+from collections.abc import Callable, Iterator, Sequence  # noqa: E402
+from pathlib import Path  # noqa: E402
 from typing import Any  # noqa: E402
 
 import numpy as np  # noqa: E402
@@ -23,6 +25,7 @@ import pytest  # noqa: E402
 from hypothesis import settings  # noqa: E402
 from numpy.typing import NDArray  # noqa: E402
 
+import ci_build  # noqa: E402
 from shared_build import computed_once, shared_dir  # noqa: E402
 
 # Parametrized grids shared by several modules ------------------------------------------
@@ -73,3 +76,49 @@ def computed(
     """``computed(name, keys, compute)``: ``{key: compute(key)}``, each value computed once
     per test run and shared by the xdist workers (`shared_build.computed_once`)."""
     return functools.partial(computed_once, shared_dir(tmp_path_factory, worker_id))
+
+
+# The shared build ------------------------------------------------------------------------
+# It takes a third of the suite's CPU time: it starts with the session, in the background of
+# one worker, and the tests that read it run last, so that no worker waits for it idle.
+
+BUILD_FIXTURES = {"clean_build", "build_record"}
+
+
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+    items.sort(key=lambda item: bool(BUILD_FIXTURES & set(getattr(item, "fixturenames", ()))))
+
+
+@pytest.fixture(scope="session", autouse=True)
+def _build_in_background(
+    request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory, worker_id: str
+) -> Iterator[None]:
+    items = request.session.items
+    wanted = any(BUILD_FIXTURES & set(getattr(item, "fixturenames", ())) for item in items)
+    if not wanted or worker_id not in ("master", "gw0"):
+        yield
+        return
+    thread = threading.Thread(target=ci_build.shared_build, args=(tmp_path_factory, worker_id))
+    thread.start()
+    yield
+    thread.join()
+
+
+@pytest.fixture(scope="session")
+def build_record(tmp_path_factory: pytest.TempPathFactory, worker_id: str) -> tuple[Path, dict]:
+    """The directory of the shared build (`ci_build`) and the record of its plan and build."""
+    return ci_build.shared_build(tmp_path_factory, worker_id)
+
+
+@pytest.fixture(scope="session")
+def clean_build(build_record: tuple[Path, dict]) -> Path:
+    """The directory of the shared build, which succeeded."""
+    workdir, record = build_record
+    assert record["build_returncode"] == 0, record["build_log"]
+    return workdir
+
+
+@pytest.fixture(scope="session")
+def shared_tmp(tmp_path_factory: pytest.TempPathFactory, worker_id: str) -> Path:
+    """A directory shared by the xdist workers of this run."""
+    return shared_dir(tmp_path_factory, worker_id)

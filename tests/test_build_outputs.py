@@ -1,7 +1,7 @@
 """What a build of the workflow writes, read by the tests of the package's own files.
 
-Every test here reads the clean build of tests/test_pipeline.py (``clean_build``, made once
-per test run and shared with test_pipeline.py) or the plan of ci_build.py (``shared_build``):
+Every test here reads the shared build of tests/ci_build.py (``clean_build``, made once
+per test run, see tests/conftest.py) or its plan (``build_record``):
 they are tests of the workflow's outputs and cost a Snakemake build, unlike the rest of
 test_paper.py, test_fit_cli.py, test_report_pages.py and test_study.py, from which they
 come.
@@ -19,9 +19,9 @@ from pathlib import Path
 import pytest
 import yaml
 
-from ci_build import CONFIG, full_config, job_counts, shared_build
+from ci_build import CONFIG, full_config, job_counts
 from test_paper import BUILT_FROM, NOT_YET_IN_ARTICLE
-from test_pipeline import NAMES, clean_build, shared_tmp  # noqa: F401
+from test_pipeline import NAMES
 from turntable import film
 from turntable.fit import plot as fitplot
 from turntable.provenance import provenance
@@ -33,7 +33,7 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 @pytest.fixture(scope="module")
-def paper_tree(clean_build: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:  # noqa: F811
+def paper_tree(clean_build: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:
     """A project tree holding what the article reads: the figures and the claims report of
     the pipeline test's clean build (whose claims section is the project's), the article's
     sources."""
@@ -176,7 +176,7 @@ def test_article_body_fits_eight_pages_and_the_whole_twelve(paper_tree: Path) ->
 
 
 def test_workflow_fits_the_synthetic_film_with_the_command(
-    clean_build: Path,  # noqa: F811
+    clean_build: Path,
 ) -> None:
     """Rule synthetic_film writes a film marked SYNTHETIC with its truth (config sections
     film and synthetic_film); rule fit_film runs `turntable fit` on it: the JSON selects the
@@ -210,7 +210,7 @@ def test_workflow_fits_the_synthetic_film_with_the_command(
     )
 
 
-def test_report_page_of_the_films(clean_build: Path) -> None:  # noqa: F811
+def test_report_page_of_the_films(clean_build: Path) -> None:
     """results/film.html, the page "What a film can tell" of the report: both figures
     embedded, the films marked SYNTHETIC, and the numbers of the JSON files (the fitted
     coefficient as "value ± stderr", the limit of the camera)."""
@@ -230,7 +230,7 @@ def test_report_page_of_the_films(clean_build: Path) -> None:  # noqa: F811
 
 
 @pytest.fixture(scope="module")
-def gallery(clean_build: Path) -> tuple[str, Path]:  # noqa: F811
+def gallery(clean_build: Path) -> tuple[str, Path]:
     """results/figures.html of the clean build of tests/test_pipeline.py."""
     return (clean_build / "results" / "figures.html").read_text(encoding="utf-8"), clean_build
 
@@ -260,13 +260,11 @@ def test_every_figure_with_its_caption(gallery) -> None:
 # The plan for a cluster (profiles/slurm) ------------------------------------------------------
 
 
-def test_one_job_per_k_with_the_slurm_profile(
-    tmp_path_factory: pytest.TempPathFactory, worker_id: str
-) -> None:
+def test_one_job_per_k_with_the_slurm_profile(build_record: tuple[Path, dict]) -> None:
     """Planning the workflow with profiles/slurm: one study_k job per k, with the profile's
     default resources (the executor is swapped for the dry-run one, so no plugin is needed).
     """
-    _, record = shared_build(tmp_path_factory, worker_id)
+    _, record = build_record
     plan = record["plan"]
     assert record["plan_returncode"] == 0, plan
     config = full_config(CONFIG)

@@ -124,11 +124,6 @@ def test_films_are_cut_in_batches_in_the_tables_order():
     assert batches([], 3) == {}
 
 
-@pytest.fixture(scope="session")
-def clean_build(tmp_path_factory: pytest.TempPathFactory, worker_id: str) -> Path:
-    return ci_build.clean_build(tmp_path_factory, worker_id)
-
-
 def test_the_build_fits_every_good_film_and_names_the_others(clean_build, tmp_path):
     """Two films of the build, a bad row, a file turntable fit refuses, in a table without a
     column surface: snakemake succeeds, the summary has one row each, and the summary of

@@ -15,7 +15,6 @@ import pytest
 
 import turntable
 from ci_build import ROOT, snakemake
-from test_pipeline import clean_build, shared_tmp  # noqa: F401
 from turntable import config as checks
 
 SCHEMA = ROOT / "workflow" / "schemas" / "config.schema.yaml"
@@ -189,7 +188,7 @@ def test_the_animated_ball_stays_in_its_panels(defaults: dict) -> None:
     ],
 )
 def test_snakemake_refuses_before_any_job_and_keeps_the_outputs(
-    clean_build: Path,  # noqa: F811
+    clean_build: Path,
     tmp_path: Path,
     bad: str,
 ) -> None:

@@ -21,22 +21,11 @@ from PIL import Image
 import ci_build
 from ci_build import FIGURE_NAMES as NAMES
 from ci_build import ROOT, job_counts, snakemake
-from shared_build import shared_dir
 
 OUTPUTS = sorted(f"figures/{name}.{ext}" for name in NAMES for ext in ("pdf", "png"))
 SCRIPTS = sorted(p.stem for p in (ROOT / "scripts").glob("*.py"))
 DOWNSTREAM_OF_FIGURES = {"paper", "figure_gallery", "all"}
 DRAWING = {*NAMES, "study", "animation", "campaign"}  # the jobs that use scripts/_style
-
-
-@pytest.fixture(scope="session")
-def shared_tmp(tmp_path_factory: pytest.TempPathFactory, worker_id: str) -> Path:
-    return shared_dir(tmp_path_factory, worker_id)
-
-
-@pytest.fixture(scope="session")
-def clean_build(tmp_path_factory: pytest.TempPathFactory, worker_id: str) -> Path:
-    return ci_build.clean_build(tmp_path_factory, worker_id)
 
 
 @pytest.fixture

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from ci_build import ROOT, shared_build
+from ci_build import ROOT
 
 README = ROOT / "README.md"
 PAGES = [README, *sorted((ROOT / "docs").rglob("*.md"))]
@@ -19,19 +19,12 @@ def _ids(paths: list[Path]) -> list[str]:
     return [str(p.relative_to(ROOT)) for p in paths]
 
 
-@pytest.fixture(scope="session")
-def build(tmp_path_factory: pytest.TempPathFactory, worker_id: str) -> Path:
-    """The shared build of tests/ci_build.py, which ran target readme_figure."""
-    workdir, record = shared_build(tmp_path_factory, worker_id)
-    assert record["build_returncode"] == 0, record["build_log"]
-    return workdir
-
-
 @pytest.mark.parametrize("name", ["fig4_trajectories.png", "animation.gif", "fig10_video.png"])
-def test_readme_pictures_are_the_pipelines(build: Path, name: str) -> None:
-    """docs/ holds the bytes of a fresh build (else: make readme-figure)."""
-    built = (build / "figures" / name).read_bytes()
-    assert (build / "docs" / name).read_bytes() == built
+def test_readme_pictures_are_the_pipelines(clean_build: Path, name: str) -> None:
+    """docs/ holds the bytes of the shared build, which ran target readme_figure (else: make
+    readme-figure)."""
+    built = (clean_build / "figures" / name).read_bytes()
+    assert (clean_build / "docs" / name).read_bytes() == built
     assert (ROOT / "docs" / name).read_bytes() == built, "docs/ is stale: make readme-figure"
 
 

@@ -85,7 +85,8 @@ $(DOCS_STAMP): $(BUILD_STAMP)
 test: $(STAMP)
 	$(BIN)/python -m pytest -n 2
 
-# The tests marked slow (each a dry run of the whole workflow or a Jupyter kernel): run by CI.
+# The tests marked slow (a dry run of the whole workflow, a Jupyter kernel, or a video of a
+# phone's camera each): run by CI.
 test-slow: $(STAMP)
 	$(BIN)/python -m pytest -n 2 -m slow
 

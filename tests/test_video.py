@@ -146,6 +146,7 @@ def test_clockwise_platter_at_a_variable_frame_rate(tmp_path) -> None:
     assert np.sqrt(np.mean(err**2)) < 0.05 * RADIUS
 
 
+@pytest.mark.slow  # a phone's camera at 960x540: 3 s; CI runs it
 def test_a_rolling_shutter_is_measured_from_the_mark(tmp_path) -> None:
     """Rows read out over 0.7 of the frame interval: the readout time is found from the
     mark within 5 %, and Omega within 0.2 %; without it, Omega would be off by 1 %."""
@@ -415,7 +416,15 @@ SCENES = {
 }  # fmt: skip
 
 
-@pytest.mark.parametrize("fields", SCENES.values(), ids=SCENES.keys())
+@pytest.mark.parametrize(
+    "fields",
+    [
+        pytest.param(
+            fields, id=name, marks=[pytest.mark.slow] * (name == "phone-lens-shutter-flicker")
+        )
+        for name, fields in SCENES.items()
+    ],
+)  # the phone's camera at 1280x720 (4 s) in CI only, with the slow tests
 def test_scenes_a_person_films_are_tracked(fields, tmp_path) -> None:
     """A coloured, dark, specular or green ball, a strip of tape or a dark mark, a shadow, a
     label, a phone's lens and shutter: tracked to within 0.05 R, Omega within 0.5 %."""
@@ -448,6 +457,7 @@ def test_a_camera_looking_straight_down_is_placed_by_its_priors_and_says_so(tmp_
     assert any("looks nearly straight down" in w for w in warnings)
 
 
+@pytest.mark.slow  # a phone's camera at 960x540: 6 s; CI runs it
 def test_a_phone_s_lens_is_measured_on_the_mark_s_track(tmp_path) -> None:
     """A phone's barrel distortion (k1 = -0.04) at a tilt of 35 degrees, 960x540 at 60
     frames/s for 2 s: the mark's track measures k1, and the positions are within 0.012 R

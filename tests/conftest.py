@@ -98,6 +98,9 @@ def _build_in_background(
     if not wanted or worker_id not in ("master", "gw0"):
         yield
         return
+    # The first call of getbasetemp() makes (and first empties) the worker's directory: here,
+    # before the thread, which would otherwise empty it under a test's tmp_path.
+    tmp_path_factory.getbasetemp()
     thread = threading.Thread(target=ci_build.shared_build, args=(tmp_path_factory, worker_id))
     thread.start()
     yield

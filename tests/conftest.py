@@ -1,7 +1,7 @@
 """Hypothesis settings and fixtures shared by the tests.
 
 Independent reference computations (sympy, mpmath, numpy) live in
-``src/turntable/reference.py`` (shared with the claims checks and the benchmarks).
+``src/turntable/reference/`` (shared with the claims checks and the benchmarks).
 """
 
 from __future__ import annotations
@@ -79,23 +79,25 @@ def computed(
 
 
 # The shared build ------------------------------------------------------------------------
-# It takes a third of the suite's CPU time: it starts with the session, in the background of
+# It takes a fifth of the suite's time: it starts with the session, in the background of
 # one worker, and the tests that read it run last, so that no worker waits for it idle.
 
 BUILD_FIXTURES = {"clean_build", "build_record"}
 
 
+def _reads_build(item: pytest.Item) -> bool:
+    return bool(BUILD_FIXTURES & set(getattr(item, "fixturenames", ())))
+
+
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
-    items.sort(key=lambda item: bool(BUILD_FIXTURES & set(getattr(item, "fixturenames", ()))))
+    items.sort(key=_reads_build)
 
 
 @pytest.fixture(scope="session", autouse=True)
 def _build_in_background(
     request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory, worker_id: str
 ) -> Iterator[None]:
-    items = request.session.items
-    wanted = any(BUILD_FIXTURES & set(getattr(item, "fixturenames", ())) for item in items)
-    if not wanted or worker_id not in ("master", "gw0"):
+    if not any(map(_reads_build, request.session.items)) or worker_id not in ("master", "gw0"):
         yield
         return
     # The first call of getbasetemp() makes (and first empties) the worker's directory: here,

@@ -35,7 +35,7 @@ ROOT = Path(__file__).resolve().parents[1]
 @pytest.fixture(scope="module")
 def paper_tree(clean_build: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:
     """A project tree holding what the article reads: the figures and the claims report of
-    the pipeline test's clean build (whose claims section is the project's), the article's
+    the shared build (whose claims section is the project's), the article's
     sources."""
     tree = tmp_path_factory.mktemp("paper-tree")
     shutil.copytree(clean_build / "figures", tree / "figures")
@@ -231,7 +231,7 @@ def test_report_page_of_the_films(clean_build: Path) -> None:
 
 @pytest.fixture(scope="module")
 def gallery(clean_build: Path) -> tuple[str, Path]:
-    """results/figures.html of the clean build of tests/test_pipeline.py."""
+    """results/figures.html of the shared build."""
     return (clean_build / "results" / "figures.html").read_text(encoding="utf-8"), clean_build
 
 

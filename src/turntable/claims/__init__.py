@@ -12,10 +12,12 @@ three-dimensional equations) and decides a verdict from the numbers
     the claim holds as stated, whatever the check finds beyond it;
 ``refined``
     it does not hold as stated, but a narrower or more precise form does,
-    stated in ``evidence``;
+    stated in ``evidence``; a statement that holds under one reading of its
+    words and fails under another is refined, the reading that holds being
+    its precise form;
 ``corrected``
-    a formula the paper prints is wrong, and ``evidence`` states the right one
-    (an erratum);
+    a formula or a classification the paper prints is wrong, and ``evidence``
+    states the right one (an erratum);
 ``undecidable``
     whether it holds depends on values the paper does not give (for instance
     experimental coefficients); never ``confirmed``;
@@ -50,6 +52,7 @@ from turntable.claims._core import (
     VERDICTS,
     Claim,
     Outcome,
+    Quantity,
     Verdict,
     Where,
     clean,
@@ -141,7 +144,7 @@ def evaluate(claim_id: str, params: Mapping[str, Any] | None = None) -> dict[str
     dict
         ``id, source, where (section, equations, figure, label), claim,
         paper_value, method, reproduced, tolerance, summary, evidence,
-        verdict, expected, gist, decisive``, with plain Python values and floats
+        verdict, expected, gist, decisive, quantities``, with plain Python values and floats
         rounded to 12 significant digits.
 
     Raises
@@ -191,6 +194,7 @@ def evaluate(claim_id: str, params: Mapping[str, Any] | None = None) -> dict[str
             "expected": claim.expected,
             "gist": claim.gist,
             "decisive": claim.decisive,
+            "quantities": {key: q.record() for key, q in outcome.quantities.items()},
         }
     )
 
@@ -230,6 +234,7 @@ __all__ = [
     "VERDICTS",
     "Claim",
     "Outcome",
+    "Quantity",
     "Verdict",
     "Where",
     "claim_ids",

@@ -14,6 +14,7 @@ from turntable import rolling
 from turntable.claims._checks_intro import ball_mass, dimensionless_friction, plane_rate
 from turntable.claims._core import (
     Outcome,
+    Quantity,
     Verdict,
     Where,
     all_within,
@@ -192,7 +193,7 @@ def _order(x: tuple[float, float], y: tuple[float, float]) -> float:
         "the drift of the rolling centre."
     ),
     expected="undecidable",
-    decisive="smallest_slipping_over_rolling",
+    decisive=f"ratio_range_at_example_ball_{BASIS}_per_turn",
     gist=(
         "with the coefficients matched by equal dissipated power, slipping untwists much "
         "faster only for small mu0, which the paper does not give"
@@ -392,6 +393,10 @@ def _rolling_resistance(p: dict[str, Any]) -> Outcome:
     elif verdict == "undecidable":
         tol["smallest_slipping_over_rolling"] = {"<": factor}
         tol["largest_slipping_over_rolling"] = {">=": factor}
+        # where the paper's coefficients would fall: the example ball of model.scaling
+        example_key = f"ratio_range_at_example_ball_{BASIS}_per_turn"
+        below = max(reproduced[example_key]) < factor
+        tol[example_key] = {"<" if below else ">=": factor}
     else:
         tol["smallest_slipping_over_rolling"] = {">": 1.0 / factor}
 
@@ -491,4 +496,45 @@ def _rolling_resistance(p: dict[str, Any]) -> Outcome:
             f"Neither mechanism untwists faster than the other by a factor of {f} under (b), "
             "per turn or per unit time, for any mu0 tried."
         )
-    return Outcome(verdict, reproduced, tol, summary, evidence)
+    return Outcome(verdict, reproduced, tol, summary, evidence, _quantities(p, k, example, m1))
+
+
+def _quantities(
+    p: Mapping[str, Any], k: float, example: list[float], m1: float
+) -> dict[str, Quantity]:
+    grid = f"the grid of mu0_range, [{p['mu0_range'][0]:g}, {p['mu0_range'][1]:g}]"
+    growth = {"per_turn": "growth per turn", "per_time": "growth rate"}
+    out = {
+        "k": Quantity("the inertia ratio of the comparison"),
+        "much_faster_factor": Quantity("the factor F that 'much faster' is read as"),
+        "centre_drift_over_growth": Quantity(
+            "rate of the rolling centre's drift to the axis over the radius's growth rate, "
+            "small delta",
+            at={"k": k},
+        ),
+        "mu0_example_ball": Quantity(
+            "mu0 of the example ball of model.scaling", over={"rpm": sorted(p["turntable_rpm"])},
+            reduce="each",
+        ),
+        f"ratio_minus_1_times_mu0_squared_{BASIS}_per_turn": Quantity(
+            "(slipping over rolling per turn, (b), minus 1) times mu0^2", at={"k": k, "mu0": m1}
+        ),
+        f"ratio_range_at_example_ball_{BASIS}_per_turn": Quantity(
+            "slipping over rolling growth per turn under (b), smallest and largest",
+            at={"k": k},
+            over={"mu0": example},
+            reduce="each",
+        ),
+    }
+    for name, m, level in (
+        (BASIS, "per_turn", "factor"),
+        (BASIS, "per_time", "factor"),
+        ("equal_coefficient", "per_turn", "inverse_factor"),
+    ):
+        out[f"crossover_{level}_{name}_{m}"] = Quantity(
+            f"mu0 where slipping over rolling {growth[m]} under "
+            f"{'(b)' if name == BASIS else '(a)'} crosses "
+            f"{'F' if level == 'factor' else '1/F'}, on {grid}",
+            at={"k": k},
+        )
+    return out

@@ -12,10 +12,12 @@ from turntable import reference as ref
 from turntable.claims._checks_solution import _states
 from turntable.claims._core import (
     Outcome,
+    Quantity,
     Where,
     all_within,
     decide,
     mu0_grid,
+    random_states,
     register,
     sig,
 )
@@ -146,6 +148,20 @@ def _damping(p: dict[str, Any]) -> Outcome:
             "tried); closed form ln N = 2 pi coth(arsinh(eps)/4), increasing in mu0"
         ),
         evidence=evidence,
+        quantities={
+            "exp_2pi": Quantity("the paper's bound e^(2 pi) on N"),
+            "min_ratio_alpha2_over_beta": Quantity(
+                "the smallest |alpha2| / beta = ln N / (2 pi)",
+                over={"k": p["k_values"], "mu0": ["the grid of mu0_range", *small]},
+                reduce="min",
+            ),
+            "n_at_mu0_small_last": Quantity(
+                "N = exp(2 pi |alpha2| / beta)", at={"k": k0, "mu0": small[-1]}
+            ),
+            "log10_n_at_reference_mu0": Quantity(
+                "log10 N", at={"k": k0}, over={"mu0": p["mu0_reference"]}, reduce="each"
+            ),
+        },
     )
 
 
@@ -167,6 +183,33 @@ def _periods_above(
     m = tt.modal_terms(z0, t, mu0, k)
     late = np.nonzero(np.linalg.norm(m.minus, axis=1) > threshold * np.linalg.norm(m.plus, axis=1))
     return float(t[late[0][-1]] / period) if late[0].size else 0.0
+
+
+def _transient_quantities(p: dict[str, Any], mu0_all: list[float]) -> dict[str, Quantity]:
+    last = f"the last time, in periods 2 pi / beta, at which |z-| > {_PERCENT} of |z+|"
+    states = len(random_states(p))
+    return {
+        "threshold": Quantity("the fraction of |z+| below which |z-| counts as negligible"),
+        "last_time_above_threshold_fig3_periods_k_paper": Quantity(
+            last + ", state of Fig. 3", at={"k": p["k_paper"]}, over={"mu0": p["mu0_fig3"]},
+            reduce="each",
+        ),
+        "last_time_above_threshold_fig3_periods": Quantity(
+            last + ", state of Fig. 3", over={"k": p["k_values"], "mu0": p["mu0_fig3"]},
+            reduce="max",
+        ),
+        "last_time_above_threshold_generic_periods": Quantity(
+            last + f", {states} random states",
+            over={"k": p["k_values"], "mu0": mu0_all}, reduce="max",
+        ),
+        "near_decaying_initial_ratio": Quantity("|z-(0)| / |z+(0)| of the state built close "
+                                                "to the decaying subspace"),
+        "mu0_near_decaying": Quantity("the values of mu0 of the generic and near states"),
+        "last_time_above_threshold_near_decaying_periods": Quantity(
+            last + f", from |z-(0)| / |z+(0)| = {NEAR_DECAYING_RATIO:g}",
+            over={"k": p["k_values"], "mu0": mu0_all}, reduce="max",
+        ),
+    }
 
 
 @register(
@@ -211,7 +254,7 @@ def _fast_transient(p: dict[str, Any]) -> Outcome:
                     worst_fig3 = max(worst_fig3, last)
                     if k == p["k_paper"]:
                         fig3_k_paper.append(last)
-                else:
+                elif i > 0:
                     worst_generic = max(worst_generic, last)
             m0 = tt.modal_terms(_states(p)[2], np.array([0.0]), mu0, k)
             scale = np.linalg.norm(m0.minus) / np.linalg.norm(m0.plus) / NEAR_DECAYING_RATIO
@@ -298,4 +341,5 @@ def _fast_transient(p: dict[str, Any]) -> Outcome:
             f"{sig(worst_near, 3)} (|z-|/|z+| = {NEAR_DECAYING_RATIO:g})"
         ),
         evidence=evidence,
+        quantities=_transient_quantities(p, mu0_all),
     )

@@ -11,7 +11,16 @@ from numpy.typing import NDArray
 import turntable as tt
 from turntable import reference as ref
 from turntable.claims import _constrained as con
-from turntable.claims._core import Outcome, Where, all_within, decide, random_states, register, sig
+from turntable.claims._core import (
+    Outcome,
+    Quantity,
+    Where,
+    all_within,
+    decide,
+    random_states,
+    register,
+    sig,
+)
 
 #: Tolerance of the quantities that are constant, or equal, up to rounding (relative).
 ROUNDING = 1e-9
@@ -72,11 +81,12 @@ def _no_slip_run(z0: NDArray[np.float64], k: float, t: NDArray[np.float64]) -> d
         "k/(k+1)), of the ball's angular velocity vector and of its magnitude; compare the "
         "package's no-slip motion with the same samples."
     ),
-    expected="confirmed",
-    decisive="rate",
+    expected="refined",
+    decisive="spin_vector",
     gist=(
-        "without slipping the centre circles at the constant rate k/(k+1) (the ball's own "
-        "angular velocity turns with it, an addition)"
+        "without slipping the centre circles at the constant rate k/(k+1), which depends "
+        "only on Omega and k; the ball's own angular velocity is not constant, it turns with "
+        "the centre"
     ),
 )
 def _no_slip_motion(p: dict[str, Any]) -> Outcome:
@@ -109,28 +119,29 @@ def _no_slip_motion(p: dict[str, Any]) -> Outcome:
         "spin_vector": ROUNDING,
         "rest_spin_magnitude": ROUNDING,
     }
-    # The paper's "moves with a constant angular velocity" is the motion on the circles: its
-    # Sec. 2 restates it as motion "in closed circles with a constant frequency". The ball's
-    # own angular velocity is an addition, bounded like the rest: it turns with the centre
-    # (for every state tried), its magnitude constant for a ball put down at rest.
-    tol["spin_vector"] = {">": ROUNDING}
-    verdict = decide(
-        all_within(
-            {**worst, "spin_vector": spin_vector_min, "rest_spin_magnitude": rest_magnitude}, tol
-        )
-    )
+    # "Moves with a constant angular velocity" holds when read as the rate at which the
+    # centre circles (the paper's Sec. 2 restates it so, "closed circles with a constant
+    # frequency"), and fails when read literally: the ball's own angular velocity turns
+    # with the centre, for every state tried. Holding under one reading only, it is refined.
+    literal = spin_vector_min <= ROUNDING
+    tol["spin_vector"] = {"<=" if literal else ">": ROUNDING}
+    measured = {**worst, "spin_vector": spin_vector_min, "rest_spin_magnitude": rest_magnitude}
+    verdict = decide(literal, otherwise="refined") if all_within(measured, tol) else "failed"
     evidence = {
         "failed": (
             "The no-slip motion does not keep a constant distance from the centre, a constant "
             "speed and the orbital rate k/(k+1), the package's no-slip motion disagrees, or "
             "the ball's angular velocity does not turn as its closed form says."
         ),
-        "confirmed": (
+        "refined": (
+            "Holds when 'angular velocity' is read as the rate at which the centre circles, "
+            "as the paper's Sec. 2 restates it ('closed circles with a constant frequency'); "
+            "read as the ball's own angular velocity, it does not hold. "
             "The centre circles about (x0, y0) with constant radius and speed at the orbital "
             "rate k/(k+1) (in units of Omega; 2/7 for k = 2/5), the same for every state "
             f"(largest relative deviation {sig(worst['rate'], 2)}), so it depends only on Omega "
             "and the radius of inertia in units of the ball's radius (k = (radius of inertia / "
-            "R)^2). Added: the ball's own angular velocity is not constant; its horizontal part "
+            "R)^2). The ball's own angular velocity is not constant: its horizontal part "
             "w = r_c + (r - r_c)/(k+1) turns with the centre (relative change "
             f"{sig(fig4_spin_vector, 3)} for the state of Fig. 4 at k = {sig(k0)}, at least "
             f"{sig(spin_vector_min, 3)} over every k and state tried), and its magnitude is "
@@ -163,6 +174,16 @@ def _no_slip_motion(p: dict[str, Any]) -> Outcome:
             f"{sig(spin_vector_min, 3)} (smallest)"
         ),
         evidence=evidence,
+        quantities={
+            "orbital_rate": Quantity(
+                "the rate k/(k+1) at which the rolling ball's centre circles", at={"k": k0}
+            ),
+            "rate": Quantity(
+                "relative deviation of the orbital rate from k/(k+1) over two turns",
+                over={"k": p["k_values"], "state": ["Fig. 4", "at rest", "random"]},
+                reduce="max",
+            ),
+        },
     )
 
 
@@ -344,4 +365,29 @@ def _scaling(p: dict[str, Any]) -> Outcome:
             else "The dimensional and dimensionless solutions disagree, or a faster plane does "
             "not mean more slip."
         ),
+        quantities={
+            "ball_radius": Quantity("the example ball's radius R (m)"),
+            "ball_mass": Quantity(
+                "the example ball's mass 4/3 pi R^3 rho (kg)",
+                at={"R": radius, "rho": p["ball_density"]},
+            ),
+            "friction_viscous": Quantity("the example ball's mu0_dim (N s/m), illustrative"),
+            "turntable_rpm": Quantity("the plane's rates (revolutions per minute)"),
+            "mu0": Quantity(
+                "mu0 = mu0_dim / (m Omega), Omega = 2 pi rpm / 60", over={"rpm": rpms},
+                reduce="each",
+            ),
+            "persistent_slip": Quantity(
+                "|u| / |v| at the end of the dimensional run, after the transient",
+                at={"k": k}, over={"rpm": rpms}, reduce="each",
+            ),
+            "persistent_slip_fast_over_slow": Quantity(
+                "persistent slip on the fastest plane over that on the slowest", at={"k": k}
+            ),
+            "scaling_error_rel": Quantity(
+                "largest difference of the dimensional and dimensionless solutions, relative to "
+                "the largest component",
+                at={"k": k}, over={"rpm": rpms}, reduce="max",
+            ),
+        },
     )

@@ -9,7 +9,7 @@ import numpy as np
 
 import turntable as tt
 from turntable import reference as ref
-from turntable.claims._core import Outcome, Where, all_within, decide, register, sig
+from turntable.claims._core import Outcome, Quantity, Where, all_within, decide, register, sig
 
 
 @register(
@@ -101,6 +101,15 @@ def _expansion(p: dict[str, Any]) -> Outcome:
             if ok
             else "The expansion does not approach the eigenvalues at the stated order."
         ),
+        quantities={
+            f"remainder_order_{name}": Quantity(
+                f"order in mu0 of |{name} - (3.2)|, fitted over mu0 in "
+                f"{{{', '.join(f'{m:g}' for m in mu0s)}}}, against 40-digit eigenvalues",
+                over={"k": p["k_values"]},
+                reduce="max",
+            )
+            for name in ("alpha1", "beta")
+        },
     )
 
 
@@ -361,7 +370,38 @@ def _convergence(p: dict[str, Any]) -> Outcome:
             f"(layer). Distance of the centres at t = 1/alpha1 at least {sig(long_err, 3)}"
         ),
         evidence=evidence,
+        quantities=_convergence_quantities(p, mu0s),
     )
+
+
+def _convergence_quantities(p: dict[str, Any], mu0s: list[float]) -> dict[str, Quantity]:
+    k0, fig4 = p["k_paper"], "from the state of Fig. 4"
+    return {
+        "t_end": Quantity("the end of the interval [0, T] of the convergence"),
+        "initial_slip": Quantity("the largest component of the initial slip u0, " + fig4),
+        "position_order_k_paper": Quantity(
+            "order in mu0 of max |r - r_ns| on [0, T], fitted over mu0 in "
+            f"{{{', '.join(f'{m:g}' for m in mu0s)}}}, " + fig4,
+            at={"k": k0},
+        ),
+        "speed_change_across_layer_k_paper": Quantity(
+            "|v| change across the initial layer, " + fig4,
+            at={"k": k0},
+            over={"mu0": mu0s},
+            reduce="each",
+        ),
+        "spin_change_across_layer_k_paper": Quantity(
+            "|w| change across the initial layer, " + fig4,
+            at={"k": k0},
+            over={"mu0": mu0s},
+            reduce="each",
+        ),
+        "min_position_error_at_t_over_alpha1": Quantity(
+            "|r - r_ns| at t = 1/alpha1, " + fig4,
+            over={"k": p["k_values"], "mu0": mu0s},
+            reduce="min",
+        ),
+    }
 
 
 def _velocity_jump(z0: np.ndarray, k: float) -> np.ndarray:

@@ -9,7 +9,41 @@ import numpy as np
 import turntable as tt
 from turntable import reference as ref
 from turntable.claims import _constrained as con
-from turntable.claims._core import Outcome, Where, all_within, decide, random_states, register, sig
+from turntable.claims._core import (
+    Outcome,
+    Quantity,
+    Where,
+    all_within,
+    decide,
+    random_states,
+    register,
+    sig,
+)
+
+#: The other maps onto u = 0 that the limit's projector is measured against.
+OTHER_MAPS = ("orthogonal projection", "keep (r, v), solve for w", "keep (r, w), solve for v")
+
+
+def other_maps() -> dict[str, np.ndarray]:
+    """Return the maps of `OTHER_MAPS`, each sending every state onto u = 0."""
+    import scipy.linalg
+
+    constraint = scipy.linalg.null_space(con.slip_matrix())
+    maps = dict(
+        zip(
+            OTHER_MAPS,
+            (
+                constraint @ constraint.T,
+                con.keep_and_solve(("r", "v"), "w"),
+                con.keep_and_solve(("r", "w"), "v"),
+            ),
+            strict=True,
+        )
+    )
+    for name, m in maps.items():
+        if np.abs(con.slip_matrix() @ m).max() > 1e-12:
+            raise RuntimeError(f"the map '{name}' does not send states onto u = 0")
+    return maps
 
 
 def _slow_projector(big: np.ndarray, mu: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -65,19 +99,13 @@ def _realization(p: dict[str, Any]) -> Outcome:
     slip = con.slip_matrix()
     constraint = scipy.linalg.null_space(slip)
     orders = {"angle": [], "projector": [], "dynamics": []}
-    others_min, free_min, growth_min, pkg_err = np.inf, np.inf, np.inf, 0.0
+    growth_min, pkg_err = np.inf, 0.0
+    others_per_k, free_per_k = [], []
     angle_last = proj_last = dyn_last = 0.0
-    eye2, zero2 = np.eye(2), np.zeros((2, 2))
-    jmat = np.array([[0.0, -1.0], [1.0, 0.0]])
+    others = other_maps().values()
     for k in p["k_values"]:
         limit = con.no_slip_projection(k)
         rolling = con.no_slip_matrix(k) @ limit
-        # Other maps onto u = 0: orthogonal projection; keep (r, v) and set w; keep (r, w), set v.
-        others = [
-            constraint @ constraint.T,
-            np.block([[eye2, zero2, zero2], [zero2, eye2, zero2], [-eye2, jmat, zero2]]),
-            np.block([[eye2, zero2, zero2], [jmat, zero2, -jmat], [zero2, zero2, eye2]]),
-        ]
         for z in random_states(p):
             pkg_err = max(pkg_err, float(np.max(np.abs(tt.no_slip_state(z, k) - limit @ z))))
         errs: dict[str, list[float]] = {name: [] for name in orders}
@@ -90,12 +118,13 @@ def _realization(p: dict[str, Any]) -> Outcome:
             growth_min = min(growth_min, ref.mp_spectrum(mu0, k).alpha1)  # 40 digits
         for name in orders:
             orders[name].append(ref.log_log_slope(mu0s, errs[name]))
-        others_min = min(others_min, *(float(np.linalg.norm(proj - o, 2)) for o in others))
-        free_min = min(free_min, float(np.linalg.norm(big @ proj - big @ limit, 2)))
+        others_per_k.append(min(float(np.linalg.norm(proj - o, 2)) for o in others))
+        free_per_k.append(float(np.linalg.norm(big @ proj - big @ limit, 2)))
         angle_last = max(angle_last, errs["angle"][-1])
         proj_last = max(proj_last, errs["projector"][-1])
         dyn_last = max(dyn_last, errs["dynamics"][-1])
     worst = {name: max(v) for name, v in orders.items()}
+    others_min, free_min = min(others_per_k), min(free_per_k)
     growth_k0 = ref.mp_spectrum(mu0s[-1], p["k_paper"]).alpha1
     reproduced = {
         "mu0_limit": mu0s,
@@ -111,6 +140,9 @@ def _realization(p: dict[str, Any]) -> Outcome:
         "other_limits": min(others_min, free_min),
         "other_maps_min": others_min,
         "free_motion_min": free_min,
+        "other_maps_per_k": others_per_k,
+        "free_motion_per_k": free_per_k,
+        "k_values": p["k_values"],
         "package": pkg_err,
         "slow_growth_rate": growth_min,
         "k": p["k_paper"],
@@ -140,11 +172,12 @@ def _realization(p: dict[str, Any]) -> Outcome:
             f"subspace u = 0 (largest angle ~ mu0^{sig(worst['angle'], 3)}), L on it tends to "
             "the nonholonomic dynamics of the constrained Newton-Euler equations, contact force "
             f"included (~ mu0^{sig(worst['dynamics'], 3)}; the motion on u = 0 without that "
-            f"force stays {sig(free_min, 3)} away), and a slipping initial state is carried "
-            "along the fast subspace to the no-slip state with the same position and the same "
+            f"force stays {sig(free_min, 3)} away, the least over every k), and a slipping "
+            "initial state is carried along the fast subspace to the no-slip state with the same position and the same "
             f"angular momentum about the contact point (~ mu0^{sig(worst['projector'], 3)}; the "
             "orthogonal projection and the maps that keep v or w stay at least "
-            f"{sig(others_min, 3)} away). So the limit selects the nonholonomic (not a "
+            f"{sig(others_min, 3)} away at mu0 = {sig(mu0s[-1])}, the least over them and every k "
+            "tried). So the limit selects the nonholonomic (not a "
             "projected or free) motion, started after an initial layer of width ~1/mu0 from that "
             "state; in time this is limit.convergence: positions uniformly on [0, T], "
             "velocities outside the layer. Added: it is not uniform in time; the slow "
@@ -167,4 +200,32 @@ def _realization(p: dict[str, Any]) -> Outcome:
             f"smallest over every k: {sig(growth_min, 3)})"
         ),
         evidence=evidence,
+        quantities=_quantities(p, mu0s),
     )
+
+
+def _quantities(p: dict[str, Any], mu0s: list[float]) -> dict[str, Quantity]:
+    norm = "largest singular value of the difference of the 6x6 matrices"
+    other = "the limit's projector against the other maps onto u = 0 (" + norm + ")"
+    free = "L on the slow subspace against L on the no-slip states, no contact force (" + norm
+    return {
+        "dynamics_order": Quantity(
+            "order in mu0 of |L P - M P_ns|, fitted over mu0 in "
+            f"{{{', '.join(f'{m:g}' for m in mu0s)}}}",
+            over={"k": p["k_values"]},
+            reduce="max",
+        ),
+        "other_maps_min": Quantity(
+            other, at={"mu0": mu0s[-1]}, over={"k": p["k_values"], "map": list(OTHER_MAPS)},
+            reduce="min",
+        ),
+        "other_maps_per_k": Quantity(
+            other, at={"mu0": mu0s[-1]}, over={"k": p["k_values"]}, reduce="each"
+        ),
+        "free_motion_min": Quantity(
+            free + ")", at={"mu0": mu0s[-1]}, over={"k": p["k_values"]}, reduce="min"
+        ),
+        "free_motion_per_k": Quantity(
+            free + ")", at={"mu0": mu0s[-1]}, over={"k": p["k_values"]}, reduce="each"
+        ),
+    }

@@ -10,6 +10,7 @@ import turntable as tt
 from turntable import reference as ref
 from turntable.claims._core import (
     Outcome,
+    Quantity,
     Where,
     all_within,
     decide,
@@ -142,6 +143,18 @@ def _decomposition(p: dict[str, Any]) -> Outcome:
             f"{sig(inv_err, 2)}, one-period shift {sig(period_err, 2)}"
         ),
         evidence=evidence,
+        quantities={
+            "max_one_period_error_rel": Quantity(
+                "largest difference of z+ (t + T) from exp(alpha1 T) z+ (t), and of z- likewise, "
+                "T = 2 pi / beta, relative to the largest component",
+                over={
+                    "k": p["k_values"],
+                    "mu0": sorted(set(p["mu0_reference"]) | set(p["mu0_fig3"])),
+                    "state": ["Fig. 3", "random"],
+                },
+                reduce="max",
+            ),
+        },
     )
 
 
@@ -240,4 +253,17 @@ def _centre(p: dict[str, Any]) -> Outcome:
             f"{sig(centre_fig4[1], 3)})"
         ),
         evidence=evidence,
+        quantities={
+            "max_plus_sign_error": Quantity(
+                "largest difference of (2.8) with the plus sign from the projection on the kernel",
+                over={"k": p["k_values"], "state": ["Fig. 4", "Fig. 3", "random"]},
+                reduce="max",
+            ),
+            "min_minus_sign_error": Quantity(
+                "largest difference of (2.8) with the printed minus sign from the projection on "
+                "the kernel, for a state with |vx(0)| > 0.1",
+                over={"k": p["k_values"], "state": ["random"]},
+                reduce="min",
+            ),
+        },
     )

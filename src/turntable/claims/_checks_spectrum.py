@@ -12,6 +12,7 @@ from turntable.claims._checks_intro import ball_mass, plane_rate
 from turntable.claims._core import (
     DEFAULT_PARAMS,
     Outcome,
+    Quantity,
     Where,
     all_within,
     decide,
@@ -204,6 +205,15 @@ def _kernel(p: dict[str, Any]) -> Outcome:
             if ok
             else "The kernel, the equilibria or their dimensional spin differ from (2.3)."
         ),
+        quantities={
+            "dimensional_ball": Quantity("the ball and plane of the dimensional check (SI)"),
+            "max_spin_vs_omega_over_r_error_rel": Quantity(
+                "relative difference of the equilibrium's spin per unit displacement from "
+                "Omega/R",
+                over={"k": p["k_values"], "mu0": p["mu0_probe"]},
+                reduce="max",
+            ),
+        },
     )
 
 
@@ -318,4 +328,18 @@ def _roots(p: dict[str, Any]) -> Outcome:
             if ok
             else "The closed forms or their evaluation disagree with the eigenvalues of L."
         ),
+        quantities={
+            "max_closed_form_error_rel": Quantity(
+                "relative difference of alpha1, alpha2, beta of (2.5) at 40 digits from the "
+                "40-digit eigenvalues of L",
+                over={"k": p["k_values"], "mu0": p["mu0_probe"]},
+                reduce="max",
+            ),
+            "max_package_error_rel": Quantity(
+                "relative difference of the package's alpha1, alpha2, beta from the 40-digit "
+                "eigenvalues of L",
+                over={"k": p["k_values"], "mu0": p["mu0_probe"]},
+                reduce="max",
+            ),
+        },
     )

@@ -11,6 +11,7 @@ from turntable import reference as ref
 from turntable.claims._checks_spectrum import _rel
 from turntable.claims._core import (
     Outcome,
+    Quantity,
     Where,
     all_within,
     decide,
@@ -33,12 +34,12 @@ SPIRAL_IN = 1e-6
         "unstable focus."
     ),
     paper_value={"text": "alpha2 < 0 < alpha1 for every mu0 > 0: an unstable focus"},
-    expected="refined",
+    expected="corrected",
     decisive="max_alpha2",
     gist=(
         "every equilibrium is unstable, but within a plane of equilibria and with two "
-        "decaying directions beside the two growing ones: a saddle-focus, an unstable "
-        "focus only in a restricted sense"
+        "decaying directions beside the two growing ones: a saddle-focus, not an unstable "
+        "focus"
     ),
     method=(
         "Evaluate alpha1 and alpha2 on the log-spaced mu0 grid for every k; at the probes, "
@@ -97,7 +98,7 @@ def _unstable_focus(p: dict[str, Any]) -> Outcome:
         "signs_at_probes_high_precision": {"==": True},
     }
     holds = all_within(reproduced, tol)
-    # What makes it refined: a plane of equilibria, two growing and two decaying directions,
+    # What makes it corrected: a plane of equilibria, two growing and two decaying directions,
     # and a motion on the decaying subspace that comes back to the equilibrium.
     saddle_tol = {
         "equilibria_plane_dimension": {"==": 2},
@@ -106,21 +107,21 @@ def _unstable_focus(p: dict[str, Any]) -> Outcome:
         "decaying_subspace_vs_exp_alpha2_t_rel": 1e-10,
     }
     saddle = all_within(reproduced, saddle_tol)
-    # An unstable focus, taken strictly, has no decaying direction: with them, the statement
-    # holds only in a restricted sense.
-    verdict = decide(holds and not saddle, "refined" if holds else "failed")
-    if verdict == "refined":
+    # An unstable focus has no decaying direction: with them, the classification is wrong and
+    # the right one is a saddle-focus.
+    verdict = decide(holds and not saddle, "corrected" if holds else "failed")
+    if verdict == "corrected":
         tol |= saddle_tol
     evidence = {
         "failed": "A sign of alpha1 or alpha2 is wrong somewhere on the grid.",
         "confirmed": "Every nonzero eigenvalue has a positive real part: an unstable focus.",
-        "refined": (
+        "corrected": (
+            "Corrected: each equilibrium is a saddle-focus, not an unstable focus. "
             "The closed forms decide the signs: a = sqrt((sqrt(1 + eps^2) + 1)/2) > 1 for "
             "every eps > 0, so alpha1 = mu (a - 1) > 0 and alpha2 = -mu (a + 1) < 0 for every "
             "mu0 > 0 and k > 0; the grid agrees for every k tried, and so do the 40-digit "
-            "eigenvalues at the probes. So every equilibrium is unstable. It is an unstable focus "
-            "only in a restricted sense: the equilibria are not isolated but form a plane "
-            "(the double zero eigenvalue, kernel of dimension 2), and across that plane each "
+            "eigenvalues at the probes. So every equilibrium is unstable, but the equilibria "
+            "are not isolated: they form a plane (the double zero eigenvalue, kernel of dimension 2), and across that plane each "
             "equilibrium has two growing oscillatory directions (alpha1 +- i beta), along "
             "which the motion spirals out, and two decaying ones (alpha2 +- i beta), along "
             "which it spirals in: a saddle-focus. A ball started on the decaying subspace "
@@ -129,9 +130,8 @@ def _unstable_focus(p: dict[str, Any]) -> Outcome:
             f"of its initial distance after {', '.join(sig(x, 2) for x in spiral_in_periods)} "
             f"of a period for k = {sig(k0)} and mu0 = "
             f"{', '.join(sig(m) for m in p['mu0_reference'])} (see solution.fast_transient). "
-            "'Unstable focus' holds for the motion in the "
-            "growing subspace, and in the sense that almost every motion leaves every "
-            "neighbourhood of the equilibrium spiralling."
+            "What the paper's name fits is the motion in the growing subspace: almost every "
+            "motion leaves every neighbourhood of the equilibrium spiralling."
         ),
     }[verdict]
     return Outcome(
@@ -146,6 +146,20 @@ def _unstable_focus(p: dict[str, Any]) -> Outcome:
             f"plane of equilibria: a saddle-focus"
         ),
         evidence=evidence,
+        quantities={
+            "max_alpha2": Quantity(
+                "the largest alpha2 (minus the smallest decay rate)",
+                over={"k": p["k_values"], "mu0": f"{p['n_points']} log-spaced in "
+                      f"[{p['mu0_range'][0]:g}, {p['mu0_range'][1]:g}]"},
+                reduce="max",
+            ),
+            "decaying_subspace_vs_exp_alpha2_t_rel": Quantity(
+                "relative difference of the distance of a ball on the decaying subspace from "
+                "exp(alpha2 t) times its initial distance, when that has fallen to 1e-6",
+                over={"k": p["k_values"], "mu0": p["mu0_reference"]},
+                reduce="max",
+            ),
+        },
     )
 
 
@@ -220,6 +234,10 @@ def _alpha1_peak(p: dict[str, Any]) -> Outcome:
             if ok
             else "The maximiser of alpha1 is not where the closed form puts it."
         ),
+        quantities={
+            "mu0_peak": Quantity("mu0* where alpha1 is largest, the closed form", at={"k": k0}),
+            "alpha1_max": Quantity("alpha1 at mu0*, the closed form", at={"k": k0}),
+        },
     )
 
 

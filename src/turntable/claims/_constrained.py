@@ -61,3 +61,28 @@ def no_slip_projection(k: float) -> NDArray[np.float64]:
     conditions = np.vstack([np.hstack([_I2, _O2, _O2]), momentum_matrix(k), slip_matrix()])
     keep = np.vstack([np.hstack([_I2, _O2, _O2]), momentum_matrix(k), np.zeros((2, 6))])
     return np.linalg.solve(conditions, keep)
+
+
+#: The components of z, by name, for `keep_and_solve`.
+PARTS = {"r": slice(0, 2), "v": slice(2, 4), "w": slice(4, 6)}
+
+
+def keep_and_solve(kept: tuple[str, str], solved: str) -> NDArray[np.float64]:
+    """Return the 6x6 map onto u = 0 that keeps two parts of z and solves for the third.
+
+    Notes
+    -----
+    The kept parts pass unchanged; the part ``solved`` (one of "r", "v", "w") is the one
+    that makes S z' = 0 (`slip_matrix`), so the map sends every state onto u = 0.
+    """
+    if sorted((*kept, solved)) != sorted(PARTS):
+        raise ValueError(f"keep two of {sorted(PARTS)}, solve for the third; got {kept}, {solved}")
+    slip = slip_matrix()
+    out = np.zeros((6, 6))
+    for name in kept:
+        out[PARTS[name], PARTS[name]] = _I2
+    rest = np.zeros((2, 6))
+    for name in kept:
+        rest[:, PARTS[name]] = slip[:, PARTS[name]]
+    out[PARTS[solved]] = -np.linalg.solve(slip[:, PARTS[solved]], rest)
+    return out

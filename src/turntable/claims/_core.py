@@ -188,6 +188,78 @@ def all_within(reproduced: Mapping[str, Any], tolerance: Mapping[str, Any]) -> b
     return all(within(reproduced[key], bound) for key, bound in tolerance.items())
 
 
+#: How a number is reduced over the parameters of its ``over``: the smallest, the largest,
+#: or one value for each (a list, in the order of ``over``).
+Reduction = Literal["min", "max", "each"]
+
+
+@dataclass(frozen=True)
+class Quantity:
+    """What a reproduced number is: one record for the report, the claims table and the article.
+
+    The article prints a number with the parameters of its record, so that its prose cannot
+    say "at k = 0.4" of a number reduced over every k.
+
+    Attributes
+    ----------
+    of : str
+        What the number measures, in words.
+    at : dict
+        The parameters held fixed, name to value, e.g. ``{"mu0": 1e4}``.
+    over : dict
+        The parameters the number is reduced over, name to the values tried.
+    reduce : {"min", "max", "each"} or None
+        The reduction over ``over``; None when ``over`` is empty.
+
+    Examples
+    --------
+    >>> q = Quantity("distance of the maps onto u = 0", at={"mu0": 1e4},
+    ...              over={"k": [0.05, 0.4]}, reduce="min")
+    >>> q.label()
+    'at mu0 = 10000; smallest over k in {0.05, 0.4}'
+    >>> Quantity("a rate", over={"k": [0.4]})
+    Traceback (most recent call last):
+    ...
+    ValueError: a Quantity reduced over ['k'] needs reduce: one of ('min', 'max', 'each')
+    """
+
+    of: str
+    at: dict[str, Any] = field(default_factory=dict)
+    over: dict[str, Any] = field(default_factory=dict)
+    reduce: Reduction | None = None
+
+    def __post_init__(self) -> None:
+        reductions = ("min", "max", "each")
+        if bool(self.over) != (self.reduce is not None) or self.reduce not in (None, *reductions):
+            raise ValueError(
+                f"a Quantity reduced over {sorted(self.over)} needs reduce: one of {reductions}"
+                if self.over
+                else f"a Quantity with reduce={self.reduce!r} needs the values it is reduced over"
+            )
+
+    def label(self) -> str:
+        """Return the parameters in words, e.g. ``at k = 0.4; largest over mu0 in {1, 10}``."""
+        parts = []
+        if self.at:
+            parts.append("at " + ", ".join(f"{n} = {_short(v)}" for n, v in self.at.items()))
+        if self.over:
+            word = {"min": "smallest", "max": "largest", "each": "one for each"}[self.reduce]
+            ranges = " and ".join(
+                f"{n} in {{{', '.join(_short(x) for x in np.ravel(v))}}}"
+                for n, v in self.over.items()
+            )
+            parts.append(f"{word} over {ranges}")
+        return "; ".join(parts)
+
+    def record(self) -> dict[str, Any]:
+        """Return the record as plain data, for results/claims.json."""
+        return {"of": self.of, "at": self.at, "over": self.over, "reduce": self.reduce}
+
+
+def _short(value: Any) -> str:
+    return f"{value:.4g}" if isinstance(value, float) else str(value)
+
+
 @dataclass(frozen=True)
 class Outcome:
     """What a check function returns.
@@ -209,6 +281,8 @@ class Outcome:
     evidence : str
         Why the verdict is what it is; for ``refined``, the precise form that
         holds; for ``corrected``, the corrected formula.
+    quantities : dict
+        What the reproduced values the article prints are (`Quantity`), under their keys.
     """
 
     verdict: Verdict
@@ -216,11 +290,13 @@ class Outcome:
     tolerance: dict[str, Any]
     summary: str
     evidence: str
+    quantities: dict[str, Quantity] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
-        missing = sorted(set(self.tolerance) - set(self.reproduced))
-        if missing:
-            raise ValueError(f"tolerance keys without a reproduced value: {missing}")
+        for name, keys in (("tolerance", self.tolerance), ("quantities", self.quantities)):
+            missing = sorted(set(keys) - set(self.reproduced))
+            if missing:
+                raise ValueError(f"{name} keys without a reproduced value: {missing}")
         for bound in self.tolerance.values():
             split_bound(bound)
 

@@ -513,7 +513,8 @@ def _quantities(
             at={"k": k},
         ),
         "mu0_example_ball": Quantity(
-            "mu0 of the example ball of model.scaling", over={"rpm": sorted(p["turntable_rpm"])},
+            "mu0 of the example ball of model.scaling",
+            over={"rpm": sorted(p["turntable_rpm"])},
             reduce="each",
         ),
         f"ratio_minus_1_times_mu0_squared_{BASIS}_per_turn": Quantity(

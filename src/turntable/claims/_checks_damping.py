@@ -191,23 +191,29 @@ def _transient_quantities(p: dict[str, Any], mu0_all: list[float]) -> dict[str, 
     return {
         "threshold": Quantity("the fraction of |z+| below which |z-| counts as negligible"),
         "last_time_above_threshold_fig3_periods_k_paper": Quantity(
-            last + ", state of Fig. 3", at={"k": p["k_paper"]}, over={"mu0": p["mu0_fig3"]},
+            last + ", state of Fig. 3",
+            at={"k": p["k_paper"]},
+            over={"mu0": p["mu0_fig3"]},
             reduce="each",
         ),
         "last_time_above_threshold_fig3_periods": Quantity(
-            last + ", state of Fig. 3", over={"k": p["k_values"], "mu0": p["mu0_fig3"]},
+            last + ", state of Fig. 3",
+            over={"k": p["k_values"], "mu0": p["mu0_fig3"]},
             reduce="max",
         ),
         "last_time_above_threshold_generic_periods": Quantity(
             last + f", {states} random states",
-            over={"k": p["k_values"], "mu0": mu0_all}, reduce="max",
+            over={"k": p["k_values"], "mu0": mu0_all},
+            reduce="max",
         ),
-        "near_decaying_initial_ratio": Quantity("|z-(0)| / |z+(0)| of the state built close "
-                                                "to the decaying subspace"),
+        "near_decaying_initial_ratio": Quantity(
+            "|z-(0)| / |z+(0)| of the state built close to the decaying subspace"
+        ),
         "mu0_near_decaying": Quantity("the values of mu0 of the generic and near states"),
         "last_time_above_threshold_near_decaying_periods": Quantity(
             last + f", from |z-(0)| / |z+(0)| = {NEAR_DECAYING_RATIO:g}",
-            over={"k": p["k_values"], "mu0": mu0_all}, reduce="max",
+            over={"k": p["k_values"], "mu0": mu0_all},
+            reduce="max",
         ),
     }
 

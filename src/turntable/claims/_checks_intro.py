@@ -374,12 +374,15 @@ def _scaling(p: dict[str, Any]) -> Outcome:
             "friction_viscous": Quantity("the example ball's mu0_dim (N s/m), illustrative"),
             "turntable_rpm": Quantity("the plane's rates (revolutions per minute)"),
             "mu0": Quantity(
-                "mu0 = mu0_dim / (m Omega), Omega = 2 pi rpm / 60", over={"rpm": rpms},
+                "mu0 = mu0_dim / (m Omega), Omega = 2 pi rpm / 60",
+                over={"rpm": rpms},
                 reduce="each",
             ),
             "persistent_slip": Quantity(
                 "|u| / |v| at the end of the dimensional run, after the transient",
-                at={"k": k}, over={"rpm": rpms}, reduce="each",
+                at={"k": k},
+                over={"rpm": rpms},
+                reduce="each",
             ),
             "persistent_slip_fast_over_slow": Quantity(
                 "persistent slip on the fastest plane over that on the slowest", at={"k": k}
@@ -387,7 +390,9 @@ def _scaling(p: dict[str, Any]) -> Outcome:
             "scaling_error_rel": Quantity(
                 "largest difference of the dimensional and dimensionless solutions, relative to "
                 "the largest component",
-                at={"k": k}, over={"rpm": rpms}, reduce="max",
+                at={"k": k},
+                over={"rpm": rpms},
+                reduce="max",
             ),
         },
     )

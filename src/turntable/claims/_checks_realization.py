@@ -173,7 +173,8 @@ def _realization(p: dict[str, Any]) -> Outcome:
             "the nonholonomic dynamics of the constrained Newton-Euler equations, contact force "
             f"included (~ mu0^{sig(worst['dynamics'], 3)}; the motion on u = 0 without that "
             f"force stays {sig(free_min, 3)} away, the least over every k), and a slipping "
-            "initial state is carried along the fast subspace to the no-slip state with the same position and the same "
+            "initial state is carried along the fast subspace to the no-slip state with the "
+            "same position and the same "
             f"angular momentum about the contact point (~ mu0^{sig(worst['projector'], 3)}; the "
             "orthogonal projection and the maps that keep v or w stay at least "
             f"{sig(others_min, 3)} away at mu0 = {sig(mu0s[-1])}, the least over them and every k "
@@ -216,7 +217,9 @@ def _quantities(p: dict[str, Any], mu0s: list[float]) -> dict[str, Quantity]:
             reduce="max",
         ),
         "other_maps_min": Quantity(
-            other, at={"mu0": mu0s[-1]}, over={"k": p["k_values"], "map": list(OTHER_MAPS)},
+            other,
+            at={"mu0": mu0s[-1]},
+            over={"k": p["k_values"], "map": list(OTHER_MAPS)},
             reduce="min",
         ),
         "other_maps_per_k": Quantity(

@@ -208,8 +208,7 @@ def _kernel(p: dict[str, Any]) -> Outcome:
         quantities={
             "dimensional_ball": Quantity("the ball and plane of the dimensional check (SI)"),
             "max_spin_vs_omega_over_r_error_rel": Quantity(
-                "relative difference of the equilibrium's spin per unit displacement from "
-                "Omega/R",
+                "relative difference of the equilibrium's spin per unit displacement from Omega/R",
                 over={"k": p["k_values"], "mu0": p["mu0_probe"]},
                 reduce="max",
             ),

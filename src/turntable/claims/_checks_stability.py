@@ -121,7 +121,8 @@ def _unstable_focus(p: dict[str, Any]) -> Outcome:
             "every eps > 0, so alpha1 = mu (a - 1) > 0 and alpha2 = -mu (a + 1) < 0 for every "
             "mu0 > 0 and k > 0; the grid agrees for every k tried, and so do the 40-digit "
             "eigenvalues at the probes. So every equilibrium is unstable, but the equilibria "
-            "are not isolated: they form a plane (the double zero eigenvalue, kernel of dimension 2), and across that plane each "
+            "are not isolated: they form a plane (the double zero eigenvalue, kernel of "
+            "dimension 2), and across that plane each "
             "equilibrium has two growing oscillatory directions (alpha1 +- i beta), along "
             "which the motion spirals out, and two decaying ones (alpha2 +- i beta), along "
             "which it spirals in: a saddle-focus. A ball started on the decaying subspace "
@@ -149,8 +150,11 @@ def _unstable_focus(p: dict[str, Any]) -> Outcome:
         quantities={
             "max_alpha2": Quantity(
                 "the largest alpha2 (minus the smallest decay rate)",
-                over={"k": p["k_values"], "mu0": f"{p['n_points']} log-spaced in "
-                      f"[{p['mu0_range'][0]:g}, {p['mu0_range'][1]:g}]"},
+                over={
+                    "k": p["k_values"],
+                    "mu0": f"{p['n_points']} log-spaced in "
+                    f"[{p['mu0_range'][0]:g}, {p['mu0_range'][1]:g}]",
+                },
                 reduce="max",
             ),
             "decaying_subspace_vs_exp_alpha2_t_rel": Quantity(

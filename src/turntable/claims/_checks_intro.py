@@ -178,6 +178,11 @@ def _no_slip_motion(p: dict[str, Any]) -> Outcome:
             "orbital_rate": Quantity(
                 "the rate k/(k+1) at which the rolling ball's centre circles", at={"k": k0}
             ),
+            "spin_vector": Quantity(
+                "max |w(t) - w(0)| / max |w| of the ball's angular velocity over two turns",
+                over={"k": p["k_values"], "state": ["Fig. 4", "random"]},
+                reduce="min",
+            ),
             "rate": Quantity(
                 "relative deviation of the orbital rate from k/(k+1) over two turns",
                 over={"k": p["k_values"], "state": ["Fig. 4", "at rest", "random"]},

@@ -82,6 +82,7 @@ def _char_poly(p: dict[str, Any]) -> Outcome:
 #: rate [rad/s], mass [kg]; R != 1 and Omega != 1.
 DIMENSIONAL_BALL = {
     "R": DEFAULT_PARAMS["ball_radius"],
+    "rpm": DEFAULT_PARAMS["turntable_rpm"][0],
     "Omega": plane_rate(DEFAULT_PARAMS["turntable_rpm"][0]),
     "m": ball_mass(DEFAULT_PARAMS["ball_radius"], DEFAULT_PARAMS["ball_density"]),
 }

@@ -55,6 +55,9 @@ CLAIMS_TESTS = ("test_claims.py",)
 #: The test of the comparison.rolling_resistance claim alone (its expected verdict).
 ROLLING_CLAIM = "test_claim_has_its_expected_verdict and rolling_resistance"
 
+#: The second routes of the numbers the article prints.
+PRINTED_TESTS = ("test_printed_numbers.py",)
+
 #: Tests of the fit of a film.
 FIT_TESTS = ("test_fit.py",)
 
@@ -606,6 +609,59 @@ MUTANTS = [
         "expected AIC difference without the penalty of the two extra parameters",
         (("fit/design.py", "d = 2.0 * q + 2.0 * k_s", "d = q + 2.0 * k_s", 1),),
         FIT_TESTS,
+    ),
+    Mutant(
+        "realization-map-sign",
+        "the map that keeps (r, v) sets w = -r + J v (off u = 0) instead of r + J v",
+        (
+            (
+                "claims/_constrained.py",
+                "out[PARTS[solved]] = -np.linalg.solve(slip[:, PARTS[solved]], rest)",
+                "out[PARTS[solved]] = -np.linalg.solve(slip[:, PARTS[solved]], rest)\n"
+                "    out[4:6, 0:2] *= -1.0",
+                1,
+            ),
+        ),
+        tests=PRINTED_TESTS,
+    ),
+    Mutant(
+        "realization-reduction",
+        "the other maps' distance: the largest over k instead of the least its record names",
+        (
+            (
+                "claims/_checks_realization.py",
+                "others_min, free_min = min(others_per_k), min(free_per_k)",
+                "others_min, free_min = max(others_per_k), min(free_per_k)",
+                1,
+            ),
+        ),
+        tests=PRINTED_TESTS,
+    ),
+    Mutant(
+        "damping-parameter",
+        "N at the first of mu0_small instead of the last its record names",
+        (
+            (
+                "claims/_checks_damping.py",
+                "n_smallest = float(np.exp(tt.log_damping_ratio(small[-1], k0)))",
+                "n_smallest = float(np.exp(tt.log_damping_ratio(small[0], k0)))",
+                1,
+            ),
+        ),
+        tests=PRINTED_TESTS,
+    ),
+    Mutant(
+        "untwisting-parameter",
+        "alpha1 around the peak at the first k instead of k_paper",
+        (
+            (
+                "claims/_checks_trajectory.py",
+                '"alpha1_around_peak_k_paper": list(_alpha1_around_peak(k0)),',
+                '"alpha1_around_peak_k_paper": list(_alpha1_around_peak(p["k_values"][0])),',
+                1,
+            ),
+        ),
+        tests=PRINTED_TESTS,
     ),
 ]
 

@@ -52,7 +52,7 @@ def _no_slip_run(z0: NDArray[np.float64], k: float, t: NDArray[np.float64]) -> d
         "radius": _variation(dist),
         "rate": float(np.max(np.abs(rate / (k / (k + 1.0)) - 1.0))),
         "speed": _variation(np.hypot(*z[:, 2:4].T)),
-        "spin_vector": float(np.max(np.abs(z[:, 4:] - z[0, 4:]))) / float(np.max(spin)),
+        "spin_vector": float(np.max(np.hypot(*(z[:, 4:] - z[0, 4:]).T))) / float(np.max(spin)),
         "spin_magnitude": _variation(spin),
         "package": float(np.max(np.abs(tt.nonholonomic(z0, t, k) - z))),
     }

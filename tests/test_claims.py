@@ -47,6 +47,7 @@ FIELDS = {
     "expected",
     "gist",
     "decisive",
+    "quantities",
 }
 
 

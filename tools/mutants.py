@@ -667,8 +667,8 @@ MUTANTS = [
 
 
 def _prepare(tmp: Path, names: tuple[str, ...]) -> list[str]:
-    """Copy src/, the tests ``names`` with the helpers they import, config/, workflow/ and
-    pyproject.toml into tmp; return the test paths."""
+    """Copy src/, the tests ``names`` with the helpers they import, config/, workflow/,
+    paper/paper.typ and pyproject.toml into tmp; return the test paths."""
     shutil.copytree(
         ROOT / "src", tmp / "src", ignore=shutil.ignore_patterns("__pycache__", "*.egg-info")
     )
@@ -683,6 +683,8 @@ def _prepare(tmp: Path, names: tuple[str, ...]) -> list[str]:
         shutil.copy2(ROOT / "tests" / name, tmp / "tests" / name)
         tests.append(f"tests/{name}")
     shutil.copy2(ROOT / "pyproject.toml", tmp / "pyproject.toml")
+    (tmp / "paper").mkdir()
+    shutil.copy2(ROOT / "paper" / "paper.typ", tmp / "paper" / "paper.typ")  # what it prints
     return tests
 
 

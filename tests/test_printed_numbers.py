@@ -57,6 +57,8 @@ def printed() -> set[tuple[str, str]]:
     pairs |= {
         ("comparison.rolling_resistance", key) for key in re.findall(r'let x = "([^"]+)"', text)
     }
+    if "#decider(id)" in text:  # the appendix: every claim's deciding value
+        pairs |= {(c.id, c.decisive) for c in claims.registered()}
     return pairs
 
 
@@ -116,7 +118,7 @@ def no_slip_state(z: np.ndarray, k: float) -> np.ndarray:
 
 
 def reduce(values: list[float], how: str) -> Any:
-    return {"min": min, "max": max, "each": list}[how](values)
+    return {"min": min, "max": max, "each": list, "set": lambda v: sorted(set(v))}[how](values)
 
 
 def over(q: dict[str, Any], name: str) -> list[Any]:
@@ -660,6 +662,74 @@ def _below_bound(q: dict[str, Any], p: dict[str, Any]) -> None:
     return None
 
 
+@route("spectrum.char_poly", "symbolic_residual")
+def _char_poly(q: dict[str, Any], p: dict[str, Any]) -> str:
+    """det(lambda - L) of the matrix assembled here, symbolically, minus lambda^2 mu^4 P4."""
+    import sympy as sp
+
+    lam, m, k = sp.symbols("lambda mu0 k", positive=True)
+    pattern = big(1.0, 1.0).astype(int)
+    scale = [1, 1, m, m, m / k, m / k]
+    mat = sp.Matrix(6, 6, lambda i, j: pattern[i, j] * scale[i])
+    mu, eps = m * (k + 1) / (2 * k), 4 * k**2 / (m * (k + 1) ** 2)
+    x = lam / mu
+    p4 = x**4 + 4 * x**3 + 4 * x**2 + eps**2
+    return str(sp.simplify((lam * sp.eye(6) - mat).det() - lam**2 * mu**4 * p4))
+
+
+@route("spectrum.kernel", "ranks")
+def _ranks(q: dict[str, Any], p: dict[str, Any]) -> list[int]:
+    ranks = [np.linalg.matrix_rank(big(m, k)) for k in over(q, "k") for m in over(q, "mu0")]
+    return reduce([int(r) for r in ranks], q["reduce"])
+
+
+@route("limit.frequency", "beta_error_order", rtol=1e-3)
+def _beta_order(q: dict[str, Any], p: dict[str, Any]) -> float:
+    return _order_beta(q, p)
+
+
+@route("limit.convergence", "min_velocity_change_across_layer", rtol=1e-6)
+def _layer(q: dict[str, Any], p: dict[str, Any]) -> float:
+    values = [float(np.hypot(*_crossed(m, k, p))) for k in over(q, "k") for m in over(q, "mu0")]
+    return reduce(values, q["reduce"])
+
+
+@residual("model.rubber_ball", "max_planar_difference_rel", 1e-8)
+def _rubber(q: dict[str, Any], p: dict[str, Any]) -> float:
+    """The planar right-hand side of the 3-D equations with w_z and without: u involves
+    gamma x w, which has no w_z, so they are equal."""
+    g = np.array([0.0, 0.0, 1.0])
+    z = random_states(p)[0]
+    rhs = []
+    for wz in (0.0, 3.0):
+        w = np.array([z[4], z[5], wz])
+        u = np.r_[z[2:4], 0.0] + np.cross(g, w) - np.cross(g, np.r_[z[0:2], 0.0])
+        rhs.append(np.r_[-u, np.cross(g, u)])
+    return float(np.abs(rhs[0] - rhs[1]).max())
+
+
+@residual("spectrum.alpha1_peak", "max_location_error_rel", 1e-5)
+def _location(q: dict[str, Any], p: dict[str, Any]) -> float:
+    """mu0* = 2 k^2 / ((k+1)^2 phi^(3/2)) against the maximiser found here."""
+    phi = (1 + math.sqrt(5)) / 2
+    return max(
+        abs(2 * k**2 / ((k + 1) ** 2 * phi**1.5) / _mu0_peak({"at": {"k": k}}, p) - 1)
+        for k in over(q, "k")
+    )
+
+
+@residual("spectrum.growth_decay_identity", "max_identity_error_high_precision", 1e-20)
+def _identity(q: dict[str, Any], p: dict[str, Any]) -> float:
+    err = 0.0
+    for k in over(q, "k"):
+        for m in over(q, "mu0"):
+            with mpmath.workdps(40):
+                ev = sorted(mpmath.eig(mp_big(m, k), left=False, right=False), key=lambda e: e.real)
+                a2, a1 = ev[0], ev[-1]
+                err = max(err, float(abs(a1.real * a2.real / a1.imag**2 + 1)))
+    return err
+
+
 @residual("spectrum.roots", "max_closed_form_error_rel", 1e-20)
 def _closed_form(q: dict[str, Any], p: dict[str, Any]) -> float:
     """(2.5) at 40 digits against mpmath's eigenvalues of the matrix assembled here."""
@@ -710,7 +780,7 @@ def test_printed_number_agrees_with_its_second_route(
         return
     got = _as_list(value)
     want = _as_list(mine)
-    if cid == "spectrum.kernel":
+    if key == "dimensional_ball":
         got = [value["R"], value["rpm"], value["Omega"]]
     assert len(got) == len(want), (got, want)
     np.testing.assert_allclose(got, want, rtol=RTOL[(cid, key)], atol=ATOL.get((cid, key), 0.0))

@@ -188,6 +188,14 @@ def _frequency(p: dict[str, Any]) -> Outcome:
             if ok
             else "beta or alpha1 does not tend to the no-slip values at the expected rate."
         ),
+        quantities={
+            "beta_error_order": Quantity(
+                "order in mu0 of |beta - k/(k+1)| / (k/(k+1)), fitted over mu0 in "
+                f"{{{', '.join(f'{m:g}' for m in mu0s)}}}, against 40-digit eigenvalues",
+                over={"k": p["k_values"]},
+                reduce="max",
+            ),
+        },
     )
 
 
@@ -395,6 +403,11 @@ def _convergence_quantities(p: dict[str, Any], mu0s: list[float]) -> dict[str, Q
             at={"k": k0},
             over={"mu0": mu0s},
             reduce="each",
+        ),
+        "min_velocity_change_across_layer": Quantity(
+            "|(dvx, dvy, dwx, dwy)| across the initial layer (to t = 40/|alpha2|), " + fig4,
+            over={"k": p["k_values"], "mu0": mu0s},
+            reduce="min",
         ),
         "min_position_error_at_t_over_alpha1": Quantity(
             "|r - r_ns| at t = 1/alpha1, " + fig4,

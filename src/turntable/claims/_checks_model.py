@@ -189,4 +189,13 @@ def _model_rubber_ball(p: dict[str, Any]) -> Outcome:
             if ok
             else "The planar motion depends on the vertical spin."
         ),
+        quantities={
+            "max_planar_difference_rel": Quantity(
+                "largest difference of the planar states with vertical spin 0 and "
+                f"{SPIN:g}, relative to the largest component, from the first random state",
+                at={"mu0": mu0, "T": t_end},
+                over={"k": p["k_values"]},
+                reduce="max",
+            ),
+        },
     )

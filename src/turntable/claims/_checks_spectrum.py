@@ -74,6 +74,11 @@ def _char_poly(p: dict[str, Any]) -> Outcome:
             if ok
             else "The symbolic characteristic polynomial differs from (2.1)."
         ),
+        quantities={
+            "symbolic_residual": Quantity(
+                "det(lambda - L) - lambda^2 mu^4 P4(lambda), simplified symbolically"
+            ),
+        },
     )
 
 
@@ -208,6 +213,9 @@ def _kernel(p: dict[str, Any]) -> Outcome:
         ),
         quantities={
             "dimensional_ball": Quantity("the ball and plane of the dimensional check (SI)"),
+            "ranks": Quantity(
+                "the rank of L", over={"k": p["k_values"], "mu0": p["mu0_probe"]}, reduce="set"
+            ),
             "max_spin_vs_omega_over_r_error_rel": Quantity(
                 "relative difference of the equilibrium's spin per unit displacement from Omega/R",
                 over={"k": p["k_values"], "mu0": p["mu0_probe"]},

@@ -241,6 +241,12 @@ def _alpha1_peak(p: dict[str, Any]) -> Outcome:
         quantities={
             "mu0_peak": Quantity("mu0* where alpha1 is largest, the closed form", at={"k": k0}),
             "alpha1_max": Quantity("alpha1 at mu0*, the closed form", at={"k": k0}),
+            "max_location_error_rel": Quantity(
+                "relative difference of mu0* from the maximiser of the largest real part of "
+                "the eigenvalues of L",
+                over={"k": p["k_values"]},
+                reduce="max",
+            ),
         },
     )
 
@@ -300,4 +306,11 @@ def _identity(p: dict[str, Any]) -> Outcome:
             if ok
             else "The identity does not hold."
         ),
+        quantities={
+            "max_identity_error_high_precision": Quantity(
+                "|alpha1 alpha2 / beta^2 + 1| from 40-digit eigenvalues",
+                over={"k": p["k_values"], "mu0": p["mu0_probe"]},
+                reduce="max",
+            ),
+        },
     )

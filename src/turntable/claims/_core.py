@@ -189,8 +189,8 @@ def all_within(reproduced: Mapping[str, Any], tolerance: Mapping[str, Any]) -> b
 
 
 #: How a number is reduced over the parameters of its ``over``: the smallest, the largest,
-#: or one value for each (a list, in the order of ``over``).
-Reduction = Literal["min", "max", "each"]
+#: one value for each (a list, in the order of ``over``), or the distinct values (sorted).
+Reduction = Literal["min", "max", "each", "set"]
 
 
 @dataclass(frozen=True)
@@ -208,7 +208,7 @@ class Quantity:
         The parameters held fixed, name to value, e.g. ``{"mu0": 1e4}``.
     over : dict
         The parameters the number is reduced over, name to the values tried.
-    reduce : {"min", "max", "each"} or None
+    reduce : {"min", "max", "each", "set"} or None
         The reduction over ``over``; None when ``over`` is empty.
 
     Examples
@@ -220,7 +220,7 @@ class Quantity:
     >>> Quantity("a rate", over={"k": [0.4]})
     Traceback (most recent call last):
     ...
-    ValueError: a Quantity reduced over ['k'] needs reduce: one of ('min', 'max', 'each')
+    ValueError: a Quantity reduced over ['k'] needs reduce: one of ('min', 'max', 'each', 'set')
     """
 
     of: str
@@ -229,7 +229,7 @@ class Quantity:
     reduce: Reduction | None = None
 
     def __post_init__(self) -> None:
-        reductions = ("min", "max", "each")
+        reductions = ("min", "max", "each", "set")
         if bool(self.over) != (self.reduce is not None) or self.reduce not in (None, *reductions):
             raise ValueError(
                 f"a Quantity reduced over {sorted(self.over)} needs reduce: one of {reductions}"
@@ -243,7 +243,12 @@ class Quantity:
         if self.at:
             parts.append("at " + ", ".join(f"{n} = {_short(v)}" for n, v in self.at.items()))
         if self.over:
-            word = {"min": "smallest", "max": "largest", "each": "one for each"}[self.reduce]
+            word = {
+                "min": "smallest",
+                "max": "largest",
+                "each": "one for each",
+                "set": "the distinct values",
+            }[self.reduce]
             ranges = " and ".join(
                 f"{n} in {{{', '.join(_short(x) for x in np.ravel(v))}}}"
                 for n, v in self.over.items()

@@ -1,6 +1,7 @@
 """Sphinx configuration of the documentation site (`make docs`); builds offline."""
 
 import contextlib
+import importlib.metadata
 import inspect
 import pkgutil
 import re
@@ -28,7 +29,7 @@ site_pages.write_all()
 project = "turntable"
 author = "turntable developers"
 copyright = "turntable developers, MIT licence"
-release = version = turntable.__version__
+release = version = importlib.metadata.version("turntable")
 
 extensions = [
     "myst_parser",

@@ -8,6 +8,8 @@ States are z = (x, y, vx, vy, wx, wy), dimensionless (length R, time
 1/Omega, mass m).
 """
 
+from importlib.metadata import version as _version
+
 from turntable.limits import (
     LimitErrorFit,
     limit_error,
@@ -41,7 +43,8 @@ from turntable.spectrum import (
     system_matrix,
 )
 
-__version__ = "0.1.0"
+# The version of the installed distribution (``version`` of ``pyproject.toml``).
+__version__ = _version("turntable")
 
 __all__ = [
     "GOLDEN",

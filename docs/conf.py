@@ -108,7 +108,16 @@ html_theme_options = {
 }
 # Pages without sub-pages have no left sidebar, and their text the width it frees.
 html_sidebars = {
-    page: [] for page in ("index", "getting-started", "results", "theory", "citing", "changelog")
+    page: []
+    for page in (
+        "index",
+        "getting-started",
+        "installation",
+        "results",
+        "theory",
+        "citing",
+        "changelog",
+    )
 }
 
 #: The modules of the API reference, one page each (docs/api/).

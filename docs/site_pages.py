@@ -14,6 +14,7 @@ import json
 import subprocess
 import sys
 import textwrap
+import tomllib
 from pathlib import Path
 from types import SimpleNamespace
 
@@ -152,7 +153,31 @@ def citation() -> None:
     _write("citation.md", text)
 
 
+def installation() -> None:
+    """``installation.md``: the wheel's name, the dependencies and each extra, from
+    ``pyproject.toml``."""
+    project = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["project"]
+    wheel = f"turntable-{project['version']}-py3-none-any.whl"
+
+    def names(requirements: list[str]) -> str:
+        return ", ".join(f"`{r}`" for r in requirements) or "nothing more"
+
+    rows = "".join(
+        f"| `{extra}` | {names(packages)} |\n"
+        for extra, packages in project["optional-dependencies"].items()
+    )
+    _write(
+        "installation.md",
+        f"```sh\npip wheel --no-deps --wheel-dir dist .\n"
+        f"pip install dist/{wheel}\n```\n\n"
+        f"It installs {names(project['dependencies'])}. An extra adds the packages of a "
+        'part of the project, for example `pip install ".[video]"`:\n\n'
+        f"| extra | adds |\n|---|---|\n{rows}",
+    )
+
+
 def write_all() -> None:
+    installation()
     citation()
     example_fit()
     claims_table()

@@ -154,9 +154,9 @@ def public_functions(module_name):
     return [n for n in public_names(module_name) if inspect.isfunction(getattr(module, n))]
 
 
-# Every public function of the API documents its parameters and has an Examples section
-# (`make test` runs them).
-numpydoc_validation_checks = {"EX01", "PR01", "PR02"}
+# Every public function of the API documents its parameters and what it returns, and has an
+# Examples section (`make test` runs them).
+numpydoc_validation_checks = {"EX01", "PR01", "PR02", "RT01"}
 _API_FUNCTIONS = [f"{m}.{n}" for m in API_MODULES for n in public_functions(m)]
 numpydoc_validation_exclude = {
     "^(?!(?:" + "|".join(f.replace(".", r"\.") for f in _API_FUNCTIONS) + ")$)"

@@ -112,12 +112,17 @@ class Camera(NamedTuple):
 
 
 def rpm_to_omega(rpm: float) -> float:
-    """Return the angular velocity in rad/s of ``rpm`` revolutions per minute (2 pi rpm / 60).
+    r"""Return :math:`\Omega = 2\pi\,\mathrm{rpm}/60`, rad/s, of ``rpm`` revolutions per minute.
 
     Parameters
     ----------
     rpm : float
         Revolutions per minute, finite and > 0.
+
+    Returns
+    -------
+    float
+        Ω, rad/s.
 
     Examples
     --------
@@ -135,6 +140,16 @@ def check_setup(setup: Setup) -> Setup:
     ----------
     setup : Setup
         Ball and turntable.
+
+    Returns
+    -------
+    Setup
+        The same values, as floats.
+
+    Raises
+    ------
+    ValueError
+        If a number is not finite, or the radius, Ω or k is not > 0.
 
     Examples
     --------
@@ -162,6 +177,11 @@ def frame_times(camera: Camera) -> NDArray[np.float64]:
     ----------
     camera : Camera
         Frame rate and duration.
+
+    Returns
+    -------
+    numpy.ndarray
+        The times, s, from 0.
 
     Examples
     --------
@@ -239,10 +259,17 @@ def state_to_si(state: ArrayLike, setup: Setup) -> dict[str, list[float]]:
     setup : Setup
         Ball and turntable (radius, Omega, axis).
 
+    Returns
+    -------
+    dict
+        ``position_m``, ``velocity_m_s`` and ``spin_rad_s``, each a list of two floats.
+
+    See Also
+    --------
+    state_from_si : The inverse.
+
     Examples
     --------
-    The inverse of `state_from_si`:
-
     >>> from turntable.film import Setup, state_to_si
     >>> state_to_si([10, 0, 0, 1, 0, 0], Setup(radius=0.005, omega=2.0))
     {'position_m': [0.05, 0.0], 'velocity_m_s': [0.0, 0.01], 'spin_rad_s': [0.0, 0.0]}

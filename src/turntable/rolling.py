@@ -281,6 +281,16 @@ def spiral_centre(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> NDArra
     delta, k : float
         Rolling-resistance coefficient and inertia ratio, finite and > 0.
 
+    Returns
+    -------
+    numpy.ndarray
+        (x, y) of the centre at each time, shape (len(t), 2).
+
+    See Also
+    --------
+    modal_terms : The spiral and its centre apart.
+    turntable.spiral_centre : The fixed centre of the slipping ball's spiral.
+
     Notes
     -----
     :math:`r_c(t) = A_c e^{\lambda_c t}`: it moves, spiralling into the turntable's

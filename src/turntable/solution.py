@@ -435,6 +435,15 @@ def slip_velocity(z: ArrayLike) -> NDArray[np.float64]:
     z : array_like
         State(s) with last axis (x, y, vx, vy, wx, wy).
 
+    Returns
+    -------
+    numpy.ndarray
+        (ux, uy) on the last axis, the other axes those of ``z``.
+
+    See Also
+    --------
+    turntable.rolling.state_on_constraint : A state with u = 0.
+
     Notes
     -----
     Section 1 (dimensionless): u is the velocity of the ball's contact

@@ -86,6 +86,15 @@ ORDER: tuple[str, ...] = tuple(_BY_ID)
 def claim_ids() -> list[str]:
     """Return every claim id, in the order of the paper.
 
+    Returns
+    -------
+    list of str
+        The ids, as in `ORDER`.
+
+    See Also
+    --------
+    get : The claim of an id.
+
     Examples
     --------
     >>> from turntable import claims

@@ -86,6 +86,21 @@ copybutton_prompt_is_regexp = True
 autodoc_typehints = "none"
 autosummary_generate = False
 numpydoc_show_class_members = False
+# The types of the Parameters and Returns sections link to their documentation.
+numpydoc_xref_param_type = True
+numpydoc_xref_aliases = {
+    "array_like": "numpy.typing.ArrayLike",
+    "ndarray": "numpy.ndarray",
+    "mapping": ":term:`mapping <python:mapping>`",
+    "path-like": ":term:`path-like <python:path-like object>`",
+    **{name: f"turntable.film.{name}" for name in ("Camera", "Film", "Rig", "Setup")},
+    "Pose": "turntable.video.camera.Pose",
+}
+# Words of the types that name no object, and the video's internal types (not on the site).
+numpydoc_xref_ignore = {
+    *("of", "or", "optional", "default", "shape", "each", "and", "a", "the", "low", "high"),
+    *("Calibration", "Candidate", "Ellipse", "VideoError", "VideoInfo"),
+}
 
 # The examples of the pages run when the site is built (``{plot}``), shown with their code.
 plot_include_source = True

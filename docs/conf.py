@@ -32,7 +32,7 @@ copyright = "turntable developers, MIT licence"
 release = version = importlib.metadata.version("turntable")
 
 extensions = [
-    "myst_parser",
+    "myst_nb",  # Markdown (MyST) and the notebooks of docs/notebooks/
     "numpydoc",
     "sphinx.ext.autodoc",
     "sphinx.ext.autosummary",
@@ -42,11 +42,12 @@ extensions = [
     "sphinx_copybutton",
     "matplotlib.sphinxext.plot_directive",
 ]
-source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 exclude_patterns = ["_build", "_intersphinx", "site_pages.py"]
 default_role = "py:obj"
 myst_heading_anchors = 3
 myst_enable_extensions = ["dollarmath", "amsmath"]
+# The notebooks are shown as `make notebooks` ran them.
+nb_execution_mode = "off"
 
 # Every reference must resolve; the ones below name what has no inventory to link to.
 nitpicky = True
@@ -211,7 +212,8 @@ class ApiMembers(SphinxDirective):
             if inspect.isclass(getattr(module, n)):
                 lines += [f".. autoclass:: {name}.{n}", "   :members:", ""]
             else:
-                lines += [f".. autodata:: {name}.{n}", ""]
+                value = site_pages.round_floats(repr(getattr(module, n)), 6)
+                lines += [f".. autodata:: {name}.{n}", f"   :annotation: = {value}", ""]
         container = nodes.container()
         self.state.nested_parse(StringList(lines), self.content_offset, container)
         return container.children
@@ -271,7 +273,15 @@ class LinkCodeNames(SphinxPostTransform):
             node.replace_self(xref)
 
 
+def _rounded_signature(app, what, name, obj, options, signature, return_annotation):
+    """Default values in signatures with 6 significant digits at most."""
+    if signature:
+        return site_pages.round_floats(signature, 6), return_annotation
+    return None
+
+
 def setup(app):
+    app.connect("autodoc-process-signature", _rounded_signature)
     app.add_post_transform(LinkCodeNames)
     app.add_directive("api-members", ApiMembers)
     app.connect("autodoc-process-docstring", _plain_bars, priority=400)

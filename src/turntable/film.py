@@ -171,7 +171,7 @@ def check_setup(setup: Setup) -> Setup:
 
 
 def frame_times(camera: Camera) -> NDArray[np.float64]:
-    """Return the times i / fps of the frames in [0, duration], s.
+    r"""Return the times :math:`i/f`, s, of the frames in [0, ``duration``] at ``fps`` :math:`f`.
 
     Parameters
     ----------

@@ -16,7 +16,8 @@ from turntable.spectrum import Expansion
 
 
 def small_friction_expansion(mu0: ArrayLike, k: ArrayLike) -> Expansion:
-    r"""Return the leading small-mu0 behaviour of alpha1, alpha2 and beta.
+    r"""Return the leading small-:math:`\mu_0` behaviour of :math:`\alpha_1`, :math:`\alpha_2` and
+    :math:`\beta`.
 
     Parameters
     ----------
@@ -63,7 +64,7 @@ def small_friction_expansion(mu0: ArrayLike, k: ArrayLike) -> Expansion:
 
 
 def nonholonomic_period(k: ArrayLike) -> NDArray[np.float64]:
-    r"""Return the period 2 pi (k + 1) / k of the no-slip motion of the centre.
+    r"""Return the period :math:`2\pi (k + 1) / k` of the no-slip motion of the centre.
 
     Parameters
     ----------
@@ -138,7 +139,7 @@ LIMIT_FIT_TIMES = 1001
 
 
 class LimitErrorFit(NamedTuple):
-    r"""The largest position error of the no-slip limit and its power law in mu0.
+    r"""The largest position error of the no-slip limit and its power law in :math:`\mu_0`.
 
     Attributes
     ----------
@@ -159,7 +160,8 @@ class LimitErrorFit(NamedTuple):
 
 
 def limit_error_fit(z0: ArrayLike, t_end: float, mu0: ArrayLike, k: float) -> LimitErrorFit:
-    r"""Return the largest position error on [0, t_end] at each mu0 and its fitted order.
+    r"""Return the largest position error on :math:`[0, t_\mathrm{end}]` at each :math:`\mu_0` and
+    its fitted order.
 
     Parameters
     ----------

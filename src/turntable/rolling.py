@@ -316,7 +316,8 @@ COMPARISONS = ("equal_coefficient", "equal_power", "equal_decay")
 
 
 def matched_delta(mu0: ArrayLike, k: ArrayLike, comparison: str) -> NDArray[np.float64]:
-    """Return the rolling coefficient delta that corresponds to mu0 under a comparison.
+    r"""Return the rolling coefficient :math:`\delta` that corresponds to :math:`\mu_0` under a
+    comparison.
 
     Parameters
     ----------

@@ -51,7 +51,7 @@ def _real_state(
 
 
 def conserved(z: ArrayLike, k: float) -> NDArray[np.float64]:
-    r"""Return the two conserved quantities (k wx - vy, k wy + vx).
+    r"""Return the two conserved quantities :math:`(k\omega_x - v_y, k\omega_y + v_x)`.
 
     Parameters
     ----------
@@ -84,7 +84,7 @@ def conserved(z: ArrayLike, k: float) -> NDArray[np.float64]:
 
 
 def spiral_centre(z0: ArrayLike, k: float) -> NDArray[np.float64]:
-    r"""Return the centre (x0, y0) of the spiral traced by the ball's centre.
+    r"""Return the centre :math:`(x_0, y_0)` of the spiral traced by the ball's centre.
 
     Parameters
     ----------
@@ -462,7 +462,7 @@ def slip_velocity(z: ArrayLike) -> NDArray[np.float64]:
 
 
 def nonholonomic(z0: ArrayLike, t: ArrayLike, k: float) -> NDArray[np.float64]:
-    r"""Return the no-slip (mu0 -> infinity) motion started from z0.
+    r"""Return the no-slip (:math:`\mu_0 \to \infty`) motion started from ``z0``.
 
     Parameters
     ----------

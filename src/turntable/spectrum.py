@@ -125,7 +125,8 @@ def _spectrum(mu0: NDArray[np.float64], k: NDArray[np.float64]) -> Spectrum:
 
 
 def spectrum(mu0: ArrayLike, k: ArrayLike) -> Spectrum:
-    r"""Return alpha1, alpha2, beta and the auxiliary mu, eps, a, b.
+    r"""Return :math:`\alpha_1`, :math:`\alpha_2`, :math:`\beta` and the auxiliary :math:`\mu`,
+    :math:`\varepsilon`, :math:`a`, :math:`b`.
 
     Parameters
     ----------
@@ -276,7 +277,7 @@ def log_growth_per_turn(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
 
 
 class Peak(NamedTuple):
-    """Location and height of the maximum of alpha1 over mu0."""
+    r"""Location and height of the maximum of :math:`\alpha_1` over :math:`\mu_0`."""
 
     mu0: NDArray[np.float64]
     alpha1: NDArray[np.float64]
@@ -284,7 +285,8 @@ class Peak(NamedTuple):
 
 
 def alpha1_peak(k: ArrayLike) -> Peak:
-    r"""Return the friction mu0 at which alpha1 is largest, and alpha1 there.
+    r"""Return the friction :math:`\mu_0` at which :math:`\alpha_1` is largest, and :math:`\alpha_1`
+    there.
 
     Parameters
     ----------
@@ -322,7 +324,8 @@ def alpha1_peak(k: ArrayLike) -> Peak:
 
 
 class Expansion(NamedTuple):
-    """Large-mu0 expansion (3.2) of alpha1, alpha2 and beta, to O(1/mu0)."""
+    r"""Large-:math:`\mu_0` expansion (3.2) of :math:`\alpha_1`, :math:`\alpha_2` and :math:`\beta`,
+    to :math:`O(1/\mu_0)`."""
 
     alpha1: NDArray[np.float64]
     alpha2: NDArray[np.float64]

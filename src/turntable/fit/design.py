@@ -237,7 +237,7 @@ def distinguishability(
 
 
 class Measurability(NamedTuple):
-    """`measurability` over a grid of mu0 (1-D arrays of the grid's length).
+    r"""`measurability` over a grid of :math:`\mu_0` (1-D arrays of the grid's length).
 
     Attributes
     ----------
@@ -265,7 +265,7 @@ def measurability(
     setup: Setup,
     camera: Camera,
 ) -> Measurability:
-    """Return what a camera can measure, for each mu0 of a grid.
+    r"""Return what a camera can measure, for each :math:`\mu_0` of a grid.
 
     Parameters
     ----------
@@ -318,7 +318,8 @@ def measurability(
 
 
 def indistinguishable_above(table: Measurability, probability: float) -> float:
-    """Return the mu0 above which AICc selects the slipping model less often than ``probability``.
+    r"""Return the :math:`\mu_0` above which AICc selects the slipping model less often than
+    ``probability``.
 
     Parameters
     ----------
@@ -363,7 +364,7 @@ def indistinguishable_above(table: Measurability, probability: float) -> float:
 def reliable_range(
     mu0: ArrayLike, relative_stderr: ArrayLike, level: float
 ) -> tuple[float, float] | None:
-    """Return the range of mu0 where the predicted relative error stays below ``level``.
+    r"""Return the range of :math:`\mu_0` where the predicted relative error stays below ``level``.
 
     Parameters
     ----------

@@ -61,7 +61,7 @@ def frame_step(film: Film, setup: Setup) -> float:
 
 
 class Consistency(NamedTuple):
-    """The fit repeated with Omega and the axis free: are the given values right?
+    r"""The fit repeated with :math:`\Omega` and the axis free: are the given values right?
 
     Attributes
     ----------
@@ -102,7 +102,7 @@ def consistency(
     fit_omega: bool = False,
     fit_axis: bool = False,
 ) -> Consistency | None:
-    """Check the given Omega and axis: fit again with them free and compare.
+    r"""Check the given :math:`\Omega` and axis: fit again with them free and compare.
 
     Parameters
     ----------

@@ -154,7 +154,8 @@ class ModelFit(NamedTuple):
 
 
 def aic(rss: float, n_observations: int, n_params: int) -> float:
-    """Return Akaike's criterion N ln(RSS / N) + 2 (p + 1) of a Gaussian least-squares fit.
+    r"""Return Akaike's criterion :math:`N \ln(\mathrm{RSS}/N) + 2 (p + 1)` of a Gaussian
+    least-squares fit.
 
     The + 1 counts the noise variance, estimated as RSS / N.  An exact fit (RSS = 0,
     only for noiseless data) counts as RSS = the smallest positive double.
@@ -184,7 +185,8 @@ def aic(rss: float, n_observations: int, n_params: int) -> float:
 
 
 def aicc(rss: float, n_observations: int, n_params: int) -> float:
-    """Return the small-sample corrected criterion AICc = AIC + 2 K (K + 1) / (N - K - 1).
+    r"""Return the small-sample corrected criterion
+    :math:`\mathrm{AICc} = \mathrm{AIC} + 2K(K + 1)/(N - K - 1)`.
 
     Parameters
     ----------

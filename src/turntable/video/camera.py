@@ -23,9 +23,9 @@ __all__ = ["Pose", "back_project", "image_radius", "project", "sphere_centre"]
 
 
 class Pose(NamedTuple):
-    """A camera: focal length (px), tilt and roll (rad), look-at point (m), distance (m),
-    image size (px), and its lens's radial distortion k1: a pinhole image point x (from the
-    principal point, in units of the focal length) is seen at x (1 + k1 |x|^2)."""
+    r"""A camera: focal length (px), tilt and roll (rad), look-at point (m), distance (m),
+    image size (px), and its lens's radial distortion :math:`k_1`: a pinhole image point x (from the
+    principal point, in units of the focal length) is seen at :math:`x (1 + k_1 |x|^2)`."""
 
     focal: float
     tilt: float
@@ -200,8 +200,9 @@ def rays(pose: Pose, u: ArrayLike, v: ArrayLike) -> NDArray[np.float64]:
 
 
 def image_radius(pose: Pose, pixels: ArrayLike, radius: float) -> NDArray[np.float64]:
-    """Radius (px) of the image of a sphere of radius ``radius`` whose centre, in the plane
-    z = radius, is seen at ``pixels`` (u, v): f radius / its distance from the camera.
+    r"""Radius (px) of the image of a sphere of radius ``radius`` whose centre, in the plane
+    z = radius, is seen at ``pixels`` (u, v): :math:`f r / d`, :math:`f` the focal length and
+    :math:`d` the centre's distance from the camera.
 
     Parameters
     ----------

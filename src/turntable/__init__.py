@@ -1,11 +1,11 @@
-"""A ball slipping with viscous friction on a uniformly rotating plane.
+r"""A ball slipping with viscous friction on a uniformly rotating plane.
 
 Exact, numerically stable solution of the linear model of T. B. Ivanova,
 "The Rolling of a Homogeneous Ball with Slipping on a Horizontal Rotating
 Plane", Russian Journal of Nonlinear Dynamics 15(2), 171-178 (2019).
 
-States are z = (x, y, vx, vy, wx, wy), dimensionless (length R, time
-1/Omega, mass m).
+States are :math:`z = (x, y, v_x, v_y, \omega_x, \omega_y)`, dimensionless (length
+:math:`R`, time :math:`1/\Omega`, mass :math:`m`).
 """
 
 from importlib.metadata import version as _version

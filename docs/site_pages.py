@@ -57,7 +57,8 @@ def round_floats(text: str, digits: int = 4) -> str:
 
 def _need(path: Path, command: str = "make") -> Path:
     if not path.exists():
-        raise SystemExit(f"{path.relative_to(ROOT)}: missing; run {command} before make docs")
+        shown = path.relative_to(ROOT) if path.is_relative_to(ROOT) else path
+        raise SystemExit(f"{shown}: missing; run {command} before make docs")
     return path
 
 
@@ -99,13 +100,14 @@ def claims_table() -> None:
 
 def _title(name: str) -> str:
     """``Figure 4`` for ``fig4_trajectories``, ``animation`` for itself."""
-    return name if name == "animation" else f"Figure {name[3:].split('_')[0]}"
+    return "Animation" if name == "animation" else f"Figure {name[3:].split('_')[0]}"
 
 
 def notebooks() -> None:
     """``docs/notebooks/<name>.ipynb``: each notebook of ``make notebooks`` as it ran (not run
-    again), under a title that names its script."""
-    figures = {"animation", *yaml.safe_load((ROOT / "workflow" / "figures.yaml").read_text())}
+    again), under a title that names its script; ``notebooks.rst``, their table of contents,
+    the figures' first in the order of the article."""
+    figures = ["animation", *yaml.safe_load((ROOT / "workflow" / "figures.yaml").read_text())]
     scripts = sorted((p.stem for p in (ROOT / "scripts").glob("*.py")), key=len, reverse=True)
     shutil.rmtree(SITE_NOTEBOOKS, ignore_errors=True)
     SITE_NOTEBOOKS.mkdir()
@@ -125,8 +127,12 @@ def notebooks() -> None:
         cell = {"cell_type": "markdown", "id": "site-title", "metadata": {}, "source": text}
         notebook["cells"].insert(0, cell)
         (SITE_NOTEBOOKS / path.name).write_text(json.dumps(notebook), encoding="utf-8")
-    if not any(SITE_NOTEBOOKS.iterdir()):
-        _need(NOTEBOOKS / "fig1_schematic.ipynb", "make notebooks")
+    names = sorted(p.stem for p in SITE_NOTEBOOKS.glob("*.ipynb"))
+    for name in figures:
+        _need(NOTEBOOKS / f"{name}.ipynb", "make notebooks")
+    order = [*figures, *(n for n in names if n not in figures)]
+    entries = "".join(f"   /notebooks/{name}\n" for name in order)
+    _write("notebooks.rst", f".. toctree::\n   :maxdepth: 1\n\n{entries}")
 
 
 def gallery() -> None:
@@ -142,7 +148,6 @@ def gallery() -> None:
         caption = (ROOT / "workflow" / "report" / f"{name}.rst").read_text(encoding="utf-8")
         caption = round_floats(jinja2.Template(caption).render(snakemake=context).strip())
         _need(ROOT / "figures" / image)
-        _need(NOTEBOOKS / f"{name}.ipynb", "make notebooks")
         title = _title(name)
         parts.append(
             f".. _{name}:\n\n{title}\n{'~' * len(title)}\n\n"
@@ -218,10 +223,10 @@ def installation() -> None:
     wheel = f"turntable-{project['version']}-py3-none-any.whl"
 
     def names(requirements: list[str]) -> str:
-        return ", ".join(f"`{r}`" for r in requirements) or "nothing more"
+        return ", ".join(requirements) or "nothing more"
 
     rows = "".join(
-        f"| `{extra}` | {names(packages)} |\n"
+        f"| {extra} | {names(packages)} |\n"
         for extra, packages in project["optional-dependencies"].items()
     )
     _write(

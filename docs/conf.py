@@ -10,6 +10,7 @@ import zlib
 from importlib import import_module
 from pathlib import Path
 
+import sphinx.util.logging
 from docutils import nodes
 from docutils.statemachine import StringList
 from sphinx import addnodes
@@ -188,6 +189,12 @@ def _doc_commented():
     return names
 
 
+_LOGGER = sphinx.util.logging.getLogger(__name__)
+#: Every public class of the API defined by the package has an example too (a warning fails
+#: the build).
+_EXAMPLES = re.compile(r"^Examples\n-+$", re.MULTILINE)
+
+
 class ApiMembers(SphinxDirective):
     """``.. api-members:: module``: a table of its public functions, each function, then
     its public classes and its constants that have a doc comment."""
@@ -210,6 +217,11 @@ class ApiMembers(SphinxDirective):
             lines += [".. rubric:: Classes and constants", ""]
         for n in others:
             if inspect.isclass(getattr(module, n)):
+                cls = getattr(module, n)
+                own = cls.__module__.startswith("turntable")  # not one made by jsonschema
+                if own and not _EXAMPLES.search(inspect.getdoc(cls) or ""):
+                    where = self.get_location()
+                    _LOGGER.warning(f"{name}.{n}: no Examples section", location=where)
                 lines += [f".. autoclass:: {name}.{n}", "   :members:", ""]
             else:
                 value = site_pages.round_floats(repr(getattr(module, n)), 6)

@@ -72,6 +72,15 @@ class RollingSpectrum(NamedTuple):
     sigma_c, nu_c : numpy.ndarray
         Decay rate (< 0) and rate of turning of the spiral's centre,
         :math:`\lambda_c = \sigma_c + i\nu_c`.
+
+    Examples
+    --------
+    The spiral grows and its centre decays:
+
+    >>> from turntable import rolling
+    >>> s = rolling.spectrum(0.1, 0.4)
+    >>> bool(s.sigma_g > 0), bool(s.sigma_c < 0)
+    (True, True)
     """
 
     sigma_g: NDArray[np.float64]

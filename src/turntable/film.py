@@ -48,7 +48,21 @@ _MARK = re.compile(rf"\b{SYNTHETIC_MARK}\b")
 
 
 class FilmError(ValueError):
-    """A film file that cannot be used; the message names file, line and column."""
+    """A film file that cannot be used; the message names file, line and column.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> from turntable.film import FilmError, read_film
+    >>> path = os.path.join(tempfile.mkdtemp(), "film.csv")
+    >>> with open(path, "w") as f:
+    ...     _ = f.write("t,x\\n0,0.05\\n")
+    >>> try:
+    ...     read_film(path)
+    ... except FilmError as error:
+    ...     print("FilmError:", str(error).split(": ", 1)[1])
+    FilmError: the header has no column 'y' (it names 't', 'x'; columns t, x, y are needed)
+    """
 
 
 class Film(NamedTuple):
@@ -63,6 +77,15 @@ class Film(NamedTuple):
     synthetic : bool
         Whether the film is marked as simulated: `read_film` sets it for a file with a
         comment line containing the word SYNTHETIC (as `turntable.fit.synthetic_header` writes).
+
+    Examples
+    --------
+    The film that ships with the package:
+
+    >>> from turntable.film import EXAMPLE_FILM, read_film
+    >>> film = read_film(EXAMPLE_FILM)
+    >>> film.t.size, film.synthetic
+    (301, True)
     """
 
     t: NDArray[np.float64]
@@ -85,6 +108,13 @@ class Setup(NamedTuple):
         Inertia ratio :math:`I / (m R^2)` of the ball (2/5 for a homogeneous ball).
     axis : tuple of float
         Position (x, y) of the turntable's axis in the film's coordinates, m.
+
+    Examples
+    --------
+    >>> from turntable.film import Setup, rpm_to_omega
+    >>> setup = Setup(radius=0.005, omega=rpm_to_omega(33.3))
+    >>> setup.k, setup.axis
+    (0.4, (0.0, 0.0))
     """
 
     radius: float
@@ -104,6 +134,13 @@ class Camera(NamedTuple):
         Standard deviation of the tracking error of each coordinate of each frame, m.
     duration : float
         Length of the film, s; the frames are at t = i / fps, 0 <= t <= duration.
+
+    Examples
+    --------
+    >>> from turntable.film import Camera, frame_times
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=10.0)
+    >>> frame_times(camera).size
+    301
     """
 
     fps: float
@@ -284,7 +321,17 @@ def state_to_si(state: ArrayLike, setup: Setup) -> dict[str, list[float]]:
 
 
 class Rig(NamedTuple):
-    """A filmed experiment: ball and turntable, camera, the ball's start, its mass (kg)."""
+    """A filmed experiment: ball and turntable, camera, the ball's start, its mass (kg).
+
+    Examples
+    --------
+    >>> from turntable.film import Camera, Rig, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.49)
+    >>> start = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> rig = Rig(setup, Camera(fps=240.0, noise=2e-4, duration=10.0), start, mass=0.00411)
+    >>> rig.state0
+    array([10.,  0.,  0.,  0.,  0.,  0.])
+    """
 
     setup: Setup
     camera: Camera

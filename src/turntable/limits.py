@@ -151,6 +151,13 @@ class LimitErrorFit(NamedTuple):
         p of the least-squares line :math:`\ln e = \ln c + p \ln \mu_0` (e the error).
     prefactor : float
         c of that line.
+
+    Examples
+    --------
+    >>> from turntable import limit_error_fit
+    >>> result = limit_error_fit([1, 1, 0, 0, 0, 1], 20.0, [10.0, 30.0, 100.0], 0.4)
+    >>> print(f"order {result.order:.2f}, prefactor {result.prefactor:.2f}")
+    order -1.01, prefactor 0.49
     """
 
     mu0: NDArray[np.float64]

@@ -170,7 +170,19 @@ def _exp(lam: complex, t: NDArray[np.float64], amp: complex) -> NDArray[np.compl
 
 
 class RollingModes(NamedTuple):
-    """The growing spiral and its moving centre, each of shape (len(t), 6)."""
+    """The growing spiral and its moving centre, each of shape (len(t), 6).
+
+    Examples
+    --------
+    The spiral and its centre add up to the solution:
+
+    >>> import numpy as np
+    >>> from turntable import rolling
+    >>> z0 = rolling.state_on_constraint([0, 0, 1, 0])
+    >>> modes = rolling.modal_terms(z0, [0.0, 10.0], 0.1, 0.4)
+    >>> bool(np.allclose(modes.spiral + modes.centre, rolling.solve(z0, [0.0, 10.0], 0.1, 0.4)))
+    True
+    """
 
     spiral: NDArray[np.float64]
     centre: NDArray[np.float64]
@@ -391,7 +403,16 @@ def growth_per_turn_ratio(mu0: ArrayLike, k: ArrayLike, comparison: str) -> NDAr
 
 
 class RollingNewtonEuler(NamedTuple):
-    """Trajectory of the constrained 3-D equations: t (n,), r, v, w (n, 3), force F (n, 3)."""
+    """Trajectory of the constrained 3-D equations: t (n,), r, v, w (n, 3), force F (n, 3).
+
+    Examples
+    --------
+    >>> from turntable import rolling
+    >>> z0 = rolling.state_on_constraint([0, 0, 1, 0])
+    >>> result = rolling.newton_euler(z0, [0.0, 1.0], 0.1, 0.4)
+    >>> result.r.shape, result.force.shape
+    ((2, 3), (2, 3))
+    """
 
     t: NDArray[np.float64]
     r: NDArray[np.float64]

@@ -324,7 +324,19 @@ def _solution_matrix(
 
 
 class ModalTerms(NamedTuple):
-    """The three parts of the solution (2.7), each of shape (len(t), 6)."""
+    """The three parts of the solution (2.7), each of shape (len(t), 6).
+
+    Examples
+    --------
+    The three parts add up to the solution:
+
+    >>> import numpy as np
+    >>> from turntable import modal_terms, solve
+    >>> z0, t = [1.0, 1.0, 0.0, 0.0, 0.0, 1.0], np.linspace(0.0, 10.0, 5)
+    >>> terms = modal_terms(z0, t, 1.0, 0.4)
+    >>> bool(np.allclose(terms.centre + terms.plus + terms.minus, solve(z0, t, 1.0, 0.4)))
+    True
+    """
 
     centre: NDArray[np.float64]
     plus: NDArray[np.float64]

@@ -99,6 +99,14 @@ class Spectrum(NamedTuple):
         :math:`a = \sqrt{(\sqrt{1 + \varepsilon^2} + 1) / 2}` of (2.5).
     b : numpy.ndarray
         :math:`b = \sqrt{(\sqrt{1 + \varepsilon^2} - 1) / 2}` of (2.5).
+
+    Examples
+    --------
+    >>> from turntable import spectrum
+    >>> s = spectrum(1.0, 0.4)
+    >>> print(f"alpha1 {float(s.alpha1):.4f}, alpha2 {float(s.alpha2):.4f}, "
+    ...       f"beta {float(s.beta):.4f}")
+    alpha1 0.0226, alpha2 -3.5226, beta 0.2821
     """
 
     alpha1: NDArray[np.float64]
@@ -277,7 +285,17 @@ def log_growth_per_turn(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
 
 
 class Peak(NamedTuple):
-    r"""Location and height of the maximum of :math:`\alpha_1` over :math:`\mu_0`."""
+    r"""Location and height of the maximum of :math:`\alpha_1` over :math:`\mu_0`.
+
+    Examples
+    --------
+    The largest growth rate at k = 0.4 (Figure 2):
+
+    >>> from turntable import alpha1_peak
+    >>> peak = alpha1_peak(0.4)
+    >>> print(f"alpha1 = {float(peak.alpha1):.4f} at mu0 = {float(peak.mu0):.4f}")
+    alpha1 = 0.0858 at mu0 = 0.0793
+    """
 
     mu0: NDArray[np.float64]
     alpha1: NDArray[np.float64]
@@ -325,7 +343,17 @@ def alpha1_peak(k: ArrayLike) -> Peak:
 
 class Expansion(NamedTuple):
     r"""Large-:math:`\mu_0` expansion (3.2) of :math:`\alpha_1`, :math:`\alpha_2` and :math:`\beta`,
-    to :math:`O(1/\mu_0)`."""
+    to :math:`O(1/\mu_0)`.
+
+    Examples
+    --------
+    Close to the exact rates at a large friction:
+
+    >>> from turntable import large_friction_expansion, spectrum
+    >>> approx, exact = large_friction_expansion(100.0, 0.4), spectrum(100.0, 0.4)
+    >>> print(f"alpha1 {float(approx.alpha1):.4e} (exact {float(exact.alpha1):.4e})")
+    alpha1 2.3324e-04 (exact 2.3324e-04)
+    """
 
     alpha1: NDArray[np.float64]
     alpha2: NDArray[np.float64]

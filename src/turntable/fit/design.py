@@ -131,6 +131,18 @@ class Distinguishability(NamedTuple):
         smaller than the number of coordinates.
     selection_probability : float
         Probability that AICc selects the slipping model.
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> d = fit.distinguishability(3.0, z0, setup, camera)
+    >>> print(f"{d.rms_distance * 1e3:.2f} mm apart, "
+    ...       f"expected AICc difference {d.expected_aicc_difference:.0f}")
+    0.12 mm apart, expected AICc difference 35
     """
 
     delta: float
@@ -248,6 +260,17 @@ class Measurability(NamedTuple):
         grid's value.
     closest_delta, rms_distance, expected_aicc_difference, selection_probability
         `Distinguishability` of each slipping ball from the closest rolling motion.
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> table = fit.measurability([0.3, 3.0, 30.0], z0, setup, camera)
+    >>> table.selection_probability.round(2)
+    array([1.  , 1.  , 0.17])
     """
 
     mu0: NDArray[np.float64]

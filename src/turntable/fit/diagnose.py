@@ -84,6 +84,19 @@ class Consistency(NamedTuple):
         rolling one and the axis was given).
     selection_changed : bool
         Whether ``refit`` decisively selects another model than the fit it checks.
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> film = fit.simulate_film("slipping", 3.0, z0, setup, camera, seed=1)
+    >>> result = fit.fit_film(film, setup)
+    >>> check = fit.consistency(film, setup, result)
+    >>> check.model, check.selection_changed
+    ('slipping', False)
     """
 
     refit: FilmFit

@@ -90,6 +90,20 @@ class ModelFit(NamedTuple):
         exact fit.
     noise : float
         The film's frame-to-frame noise per coordinate, m (`frame_noise`).
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> film = fit.simulate_film("slipping", 3.0, z0, setup, camera, seed=1)
+    >>> result = fit.fit_film(film, setup)
+    >>> slipping = result.fits["slipping"]
+    >>> print(f"{slipping.coefficient:.2f} ± {slipping.stderr:.2f}, "
+    ...       f"rms {slipping.rms_residual * 1e3:.2f} mm")
+    2.93 ± 0.28, rms 0.17 mm
     """
 
     model: str
@@ -341,6 +355,20 @@ class FilmFit(NamedTuple):
         fits the film at least as well as the other (a smaller or equal RSS).
     reason : str
         Why the selection is not decisive ("" if it is).
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> film = fit.simulate_film("slipping", 3.0, z0, setup, camera, seed=1)
+    >>> result = fit.fit_film(film, setup)
+    >>> list(result.fits), result.selected
+    (['slipping', 'rolling_resistance'], 'slipping')
+    >>> print(f"Akaike weight of slipping {result.akaike_weights['slipping']:.3f}")
+    Akaike weight of slipping 1.000
     """
 
     fits: dict[str, ModelFit]

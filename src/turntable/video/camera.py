@@ -25,7 +25,19 @@ __all__ = ["Pose", "back_project", "image_radius", "project", "sphere_centre"]
 class Pose(NamedTuple):
     r"""A camera: focal length (px), tilt and roll (rad), look-at point (m), distance (m),
     image size (px), and its lens's radial distortion :math:`k_1`: a pinhole image point x (from the
-    principal point, in units of the focal length) is seen at :math:`x (1 + k_1 |x|^2)`."""
+    principal point, in units of the focal length) is seen at :math:`x (1 + k_1 |x|^2)`.
+
+    Examples
+    --------
+    A camera 0.5 m above the axis, looking straight down:
+
+    >>> from turntable.video.camera import Pose, project
+    >>> pose = Pose(focal=1000.0, tilt=0.0, roll=0.0, look_at=(0.0, 0.0), distance=0.5,
+    ...             size=(1280, 720))
+    >>> project(pose, [[0.0, 0.0], [0.05, 0.0]])
+    array([[639.5, 359.5],
+           [739.5, 359.5]])
+    """
 
     focal: float
     tilt: float

@@ -125,6 +125,10 @@ def spectrum(delta: ArrayLike, k: ArrayLike) -> RollingSpectrum:
     -------
     RollingSpectrum
 
+    See Also
+    --------
+    turntable.spectrum : The rates of the slipping ball.
+
     Notes
     -----
     The closed forms of :doc:`/theory` (roots of

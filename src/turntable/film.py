@@ -255,6 +255,10 @@ def state_from_si(
     numpy.ndarray
         (r - axis) / R, v / (R Omega), w / Omega.
 
+    See Also
+    --------
+    turntable.film.state_to_si : The inverse.
+
     Notes
     -----
     The paper's units (Section 1): length R, time 1/Omega; the spin w is in units of
@@ -429,6 +433,10 @@ def read_film(
         message starts with ``<file>:<line>:`` and names the column and its field number
         where there is one.
 
+    See Also
+    --------
+    turntable.film.write_film : The file it reads.
+
     Examples
     --------
     >>> import os, tempfile
@@ -539,6 +547,10 @@ def write_film(
         Lines written first, each prefixed with ``"# "``.
     digits : int
         Significant digits of each number.
+
+    See Also
+    --------
+    turntable.film.read_film : Reads it back.
 
     Examples
     --------

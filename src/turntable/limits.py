@@ -30,6 +30,10 @@ def small_friction_expansion(mu0: ArrayLike, k: ArrayLike) -> Expansion:
         :math:`\alpha_1 = \sqrt{\mu_0/2} - \mu`, :math:`\alpha_2 = -\sqrt{\mu_0/2} - \mu` and
         :math:`\beta = \sqrt{\mu_0/2}`, with :math:`\mu = \mu_0 (k + 1) / (2 k)` of (2.2).
 
+    See Also
+    --------
+    turntable.spectrum : The exact rates.
+
     Notes
     -----
     From (2.5) with :math:`\varepsilon = 4 k^2 / (\mu_0 (k+1)^2) \to \infty` as
@@ -111,6 +115,11 @@ def limit_error(z0: ArrayLike, t: ArrayLike, mu0: ArrayLike, k: float) -> NDArra
         Same shape as ``mu0``: :math:`\max_t |r(t; \mu_0) - r_{nh}(t)|`, with r the
         centre from `solve` and :math:`r_{nh}` the centre from `nonholonomic`.
 
+    See Also
+    --------
+    turntable.limit_error_fit : Its power law in the friction.
+    turntable.nonholonomic : The limit.
+
     Notes
     -----
     Section 3, (3.3): on a fixed interval the solution tends to the no-slip one
@@ -184,6 +193,10 @@ def limit_error_fit(z0: ArrayLike, t_end: float, mu0: ArrayLike, k: float) -> Li
     Returns
     -------
     LimitErrorFit
+
+    See Also
+    --------
+    turntable.limit_error : The error at one friction.
 
     Notes
     -----

@@ -91,6 +91,10 @@ def newton_euler(
     -------
     NewtonEulerResult
 
+    See Also
+    --------
+    turntable.solve : The closed form of the reduced equations.
+
     Notes
     -----
     Equations (1.3)-(1.4) in the units of (1.6):

@@ -261,6 +261,11 @@ def solve(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> NDArray[np.flo
         For bad input, a z0 with slip, or times at which the growing mode
         overflows (the message names the largest representable t).
 
+    See Also
+    --------
+    turntable.rolling.modal_terms : The same solution as spiral and centre.
+    turntable.solve : The slipping ball.
+
     Notes
     -----
     :math:`r(t) = A_g e^{\lambda_g t} + A_c e^{\lambda_c t}`, :math:`v = \dot r`,
@@ -463,6 +468,10 @@ def newton_euler(
     Returns
     -------
     RollingNewtonEuler
+
+    See Also
+    --------
+    turntable.rolling.solve : The closed form.
 
     Notes
     -----

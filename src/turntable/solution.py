@@ -98,6 +98,10 @@ def spiral_centre(z0: ArrayLike, k: float) -> NDArray[np.float64]:
     numpy.ndarray
         ``[x0, y0]``, of shape ``z0.shape[:-1] + (2,)``.
 
+    See Also
+    --------
+    turntable.solve : The motion about it.
+
     Notes
     -----
     Equation (2.8), from the conserved quantities:
@@ -162,6 +166,12 @@ def solve(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> NDArray[np.float
         For a bad argument, or a time beyond `max_time` (mu0, k, z0), where
         the growing part :math:`e^{\alpha_1 t}` of the solution overflows a double; the
         message names that largest time.
+
+    See Also
+    --------
+    turntable.modal_terms : The same solution in its fixed, growing and decaying parts.
+    turntable.nonholonomic : Its limit without slipping.
+    turntable.rolling.solve : The rolling ball of the comparison model.
 
     Notes
     -----
@@ -363,6 +373,10 @@ def modal_terms(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> ModalTerms
         :math:`\alpha_2 \pm i\beta`.  They sum to `solve` (up to rounding relative to
         the size of the terms, which grow like :math:`\mu_0^{-1/2}` as :math:`\mu_0 \to 0`).
 
+    See Also
+    --------
+    turntable.solve : Their sum.
+
     Notes
     -----
     Equation (2.7).  With :math:`\rho_0 = r(0) - r_c`, :math:`v_0 = v(0)` and
@@ -491,6 +505,11 @@ def nonholonomic(z0: ArrayLike, t: ArrayLike, k: float) -> NDArray[np.float64]:
     -------
     numpy.ndarray
         Shape (len(t), 6).
+
+    See Also
+    --------
+    turntable.solve : The slipping ball.
+    turntable.nonholonomic_period : The period of this motion.
 
     Notes
     -----

@@ -46,6 +46,10 @@ def system_matrix(mu0: float, k: float) -> NDArray[np.float64]:
     numpy.ndarray
         The matrix L, shape (6, 6), acting on z = (x, y, vx, vy, wx, wy).
 
+    See Also
+    --------
+    turntable.eigenvalues : Its nonzero eigenvalues.
+
     Notes
     -----
     Equation (1.7) of the paper:
@@ -147,6 +151,12 @@ def spectrum(mu0: ArrayLike, k: ArrayLike) -> Spectrum:
     Spectrum
         Named tuple of arrays of the broadcast shape.
 
+    See Also
+    --------
+    turntable.eigenvalues : The same rates as complex eigenvalues.
+    turntable.small_friction_expansion : Its leading terms at small friction.
+    turntable.large_friction_expansion : Its leading terms at large friction.
+
     Notes
     -----
     Equations (2.2) and (2.5):
@@ -187,6 +197,11 @@ def eigenvalues(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.complex128]:
         Complex array of shape ``broadcast(mu0, k).shape + (4,)`` whose last
         axis is :math:`(\alpha_1 + i\beta, \alpha_1 - i\beta, \alpha_2 + i\beta,
         \alpha_2 - i\beta)`.
+
+    See Also
+    --------
+    turntable.spectrum : The same rates as real numbers.
+    turntable.system_matrix : The matrix whose eigenvalues they are.
 
     Notes
     -----
@@ -318,6 +333,10 @@ def alpha1_peak(k: ArrayLike) -> Peak:
         :math:`\alpha_1 = k / (k + 1)\, \varphi^{-5/2}`, with :math:`\varphi` the golden
         ratio, and the universal :math:`\varepsilon = 2 \varphi^{3/2}` at the peak.
 
+    See Also
+    --------
+    turntable.spectrum : The rates at any friction.
+
     Notes
     -----
     In terms of a of (2.5),
@@ -374,6 +393,10 @@ def large_friction_expansion(mu0: ArrayLike, k: ArrayLike) -> Expansion:
         :math:`\alpha_1 = k^3 / (\mu_0 (k+1)^3)`,
         :math:`\alpha_2 = -\mu_0 (k+1) / k - k^3 / (\mu_0 (k+1)^3)`,
         :math:`\beta = k / (k+1)`.
+
+    See Also
+    --------
+    turntable.spectrum : The exact rates.
 
     Notes
     -----

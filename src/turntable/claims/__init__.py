@@ -159,6 +159,11 @@ def evaluate(claim_id: str, params: Mapping[str, Any] | None = None) -> dict[str
         If the check returns a verdict not in `VERDICTS`, no reproduced value under the
         claim's ``decisive`` key, or, with the expected verdict, no bound on it.
 
+    See Also
+    --------
+    turntable.claims.evaluate_all : Every claim.
+    turntable.claims.get : The claim itself.
+
     Examples
     --------
     >>> from turntable import claims
@@ -217,6 +222,10 @@ def evaluate_all(params: Mapping[str, Any] | None = None) -> list[dict[str, Any]
     -------
     list of dict
         One record per claim, in the order of `ORDER` (see `evaluate`).
+
+    See Also
+    --------
+    turntable.claims.evaluate : One claim.
 
     Examples
     --------

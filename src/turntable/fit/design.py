@@ -89,6 +89,10 @@ def predicted_stderr(
     ValueError
         For fewer coordinates than parameters, or bad numbers.
 
+    See Also
+    --------
+    turntable.fit.measurability : Over a grid of frictions, with the selection.
+
     Notes
     -----
     Fisher information :math:`F = J^T J / \sigma^2` over the frames, J the derivatives of
@@ -176,6 +180,10 @@ def distinguishability(
         If the camera gives fewer frames than `min_frames` (too few for AICc to compare
         the 7 parameters of the slipping model with the 5 of the rolling one), or bad
         numbers.
+
+    See Also
+    --------
+    turntable.fit.measurability : Over a grid of frictions.
 
     Notes
     -----
@@ -307,6 +315,11 @@ def measurability(
         For each mu0: `predicted_stderr` of mu0; for delta equal to it, the rolling
         ball's `predicted_stderr` of delta; and the `distinguishability` of the slipping
         ball from the closest rolling motion.
+
+    See Also
+    --------
+    turntable.fit.predicted_stderr : The standard error at one friction.
+    turntable.fit.distinguishability : Slipping against rolling at one friction.
 
     Examples
     --------

@@ -188,6 +188,10 @@ def aic(rss: float, n_observations: int, n_params: int) -> float:
     float
         The criterion.
 
+    See Also
+    --------
+    turntable.fit.aicc : Corrected for a small sample.
+
     Examples
     --------
     >>> from turntable import fit
@@ -216,6 +220,10 @@ def aicc(rss: float, n_observations: int, n_params: int) -> float:
     float
         `aic` plus the correction (Hurvich and Tsai 1989), exact for a linear Gaussian
         model; inf when N <= K + 1, where it is undefined.
+
+    See Also
+    --------
+    turntable.fit.aic : Uncorrected.
 
     Examples
     --------

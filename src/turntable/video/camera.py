@@ -155,6 +155,10 @@ def project(pose: Pose, points: ArrayLike, height: float = 0.0) -> NDArray[np.fl
     numpy.ndarray
         The image points (u, v), px, of the shape of ``points``.
 
+    See Also
+    --------
+    turntable.video.camera.back_project : The inverse.
+
     Examples
     --------
     The axis seen by a camera 40 cm away looking straight at it is at the image's centre:
@@ -183,6 +187,10 @@ def back_project(pose: Pose, pixels: ArrayLike, height: float = 0.0) -> NDArray[
     -------
     numpy.ndarray
         The points (x, y), m, of the shape of ``pixels``.
+
+    See Also
+    --------
+    turntable.video.camera.project : The inverse.
 
     Examples
     --------

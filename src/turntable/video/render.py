@@ -409,6 +409,10 @@ def render_video(
     Rendered
         The camera and the true positions of the ball's centre at the frame times (m).
 
+    See Also
+    --------
+    turntable.video.track.track_video : Tracks it.
+
     Notes
     -----
     Frame i, at time t_i = i / fps of the video (moved by the jitter, rounded to the

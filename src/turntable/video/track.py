@@ -162,6 +162,10 @@ def track_video(
         in nearly every frame, a failed check (`turntable.video.check`).  Its ``found`` is
         the `FirstLook`, for drawing.
 
+    See Also
+    --------
+    turntable.video.render.render_video : A SYNTHETIC video to track.
+
     Examples
     --------
     A SYNTHETIC video, 480x270 px at 30 frames/s for 1 s, of a ball slipping on a platter

@@ -90,9 +90,10 @@ test: $(STAMP)
 test-slow: $(STAMP)
 	$(BIN)/python -m pytest -n 2 -m slow
 
-# The documentation site from docs/ (guides and the API reference), offline; a warning fails it.
-# Built beside the site, which it replaces only when it builds: no page outlives its source.
-docs: $(DOCS_STAMP)
+# The documentation site from docs/ (guides, the API reference and the executed notebooks),
+# offline; a warning fails it. Built beside the site, which it replaces only when it builds: no
+# page outlives its source.
+docs: $(DOCS_STAMP) notebooks
 	rm -rf docs/_build/html.new
 	$(BIN)/sphinx-build -b html docs docs/_build/html.new -d docs/_build/doctrees -E -W \
 		--keep-going -q

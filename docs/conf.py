@@ -1,6 +1,7 @@
 """Sphinx configuration of the documentation site (`make docs`); builds offline."""
 
 import contextlib
+import importlib.metadata
 import inspect
 import pkgutil
 import re
@@ -9,6 +10,7 @@ import zlib
 from importlib import import_module
 from pathlib import Path
 
+import sphinx.util.logging
 from docutils import nodes
 from docutils.statemachine import StringList
 from sphinx import addnodes
@@ -28,10 +30,10 @@ site_pages.write_all()
 project = "turntable"
 author = "turntable developers"
 copyright = "turntable developers, MIT licence"
-release = version = turntable.__version__
+release = version = importlib.metadata.version("turntable")
 
 extensions = [
-    "myst_parser",
+    "myst_nb",  # Markdown (MyST) and the notebooks of docs/notebooks/
     "numpydoc",
     "sphinx.ext.autodoc",
     "sphinx.ext.autosummary",
@@ -41,11 +43,12 @@ extensions = [
     "sphinx_copybutton",
     "matplotlib.sphinxext.plot_directive",
 ]
-source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 exclude_patterns = ["_build", "_intersphinx", "site_pages.py"]
 default_role = "py:obj"
 myst_heading_anchors = 3
 myst_enable_extensions = ["dollarmath", "amsmath"]
+# The notebooks are shown as `make notebooks` ran them.
+nb_execution_mode = "off"
 
 # Every reference must resolve; the ones below name what has no inventory to link to.
 nitpicky = True
@@ -85,6 +88,21 @@ copybutton_prompt_is_regexp = True
 autodoc_typehints = "none"
 autosummary_generate = False
 numpydoc_show_class_members = False
+# The types of the Parameters and Returns sections link to their documentation.
+numpydoc_xref_param_type = True
+numpydoc_xref_aliases = {
+    "array_like": "numpy.typing.ArrayLike",
+    "ndarray": "numpy.ndarray",
+    "mapping": ":term:`mapping <python:mapping>`",
+    "path-like": ":term:`path-like <python:path-like object>`",
+    **{name: f"turntable.film.{name}" for name in ("Camera", "Film", "Rig", "Setup")},
+    "Pose": "turntable.video.camera.Pose",
+}
+# Words of the types that name no object, and the video's internal types (not on the site).
+numpydoc_xref_ignore = {
+    *("of", "or", "optional", "default", "shape", "each", "and", "a", "the", "low", "high"),
+    *("Calibration", "Candidate", "Ellipse", "VideoError", "VideoInfo"),
+}
 
 # The examples of the pages run when the site is built (``{plot}``), shown with their code.
 plot_include_source = True
@@ -107,7 +125,16 @@ html_theme_options = {
 }
 # Pages without sub-pages have no left sidebar, and their text the width it frees.
 html_sidebars = {
-    page: [] for page in ("index", "getting-started", "results", "theory", "citing", "changelog")
+    page: []
+    for page in (
+        "index",
+        "getting-started",
+        "installation",
+        "results",
+        "theory",
+        "citing",
+        "changelog",
+    )
 }
 
 #: The modules of the API reference, one page each (docs/api/).
@@ -144,9 +171,9 @@ def public_functions(module_name):
     return [n for n in public_names(module_name) if inspect.isfunction(getattr(module, n))]
 
 
-# Every public function of the API documents its parameters and has an Examples section
-# (`make test` runs them).
-numpydoc_validation_checks = {"EX01", "PR01", "PR02"}
+# Every public function of the API documents its parameters and what it returns, and has an
+# Examples section (`make test` runs them).
+numpydoc_validation_checks = {"EX01", "PR01", "PR02", "RT01"}
 _API_FUNCTIONS = [f"{m}.{n}" for m in API_MODULES for n in public_functions(m)]
 numpydoc_validation_exclude = {
     "^(?!(?:" + "|".join(f.replace(".", r"\.") for f in _API_FUNCTIONS) + ")$)"
@@ -160,6 +187,12 @@ def _doc_commented():
         with contextlib.suppress(PycodeError):
             names |= {attr for _, attr in ModuleAnalyzer.for_module(info.name).find_attr_docs()}
     return names
+
+
+_LOGGER = sphinx.util.logging.getLogger(__name__)
+#: Every public class of the API defined by the package has an example too (a warning fails
+#: the build).
+_EXAMPLES = re.compile(r"^Examples\n-+$", re.MULTILINE)
 
 
 class ApiMembers(SphinxDirective):
@@ -184,9 +217,15 @@ class ApiMembers(SphinxDirective):
             lines += [".. rubric:: Classes and constants", ""]
         for n in others:
             if inspect.isclass(getattr(module, n)):
+                cls = getattr(module, n)
+                own = cls.__module__.startswith("turntable")  # not one made by jsonschema
+                if own and not _EXAMPLES.search(inspect.getdoc(cls) or ""):
+                    where = self.get_location()
+                    _LOGGER.warning(f"{name}.{n}: no Examples section", location=where)
                 lines += [f".. autoclass:: {name}.{n}", "   :members:", ""]
             else:
-                lines += [f".. autodata:: {name}.{n}", ""]
+                value = site_pages.round_floats(repr(getattr(module, n)), 6)
+                lines += [f".. autodata:: {name}.{n}", f"   :annotation: = {value}", ""]
         container = nodes.container()
         self.state.nested_parse(StringList(lines), self.content_offset, container)
         return container.children
@@ -246,7 +285,15 @@ class LinkCodeNames(SphinxPostTransform):
             node.replace_self(xref)
 
 
+def _rounded_signature(app, what, name, obj, options, signature, return_annotation):
+    """Default values in signatures with 6 significant digits at most."""
+    if signature:
+        return site_pages.round_floats(signature, 6), return_annotation
+    return None
+
+
 def setup(app):
+    app.connect("autodoc-process-signature", _rounded_signature)
     app.add_post_transform(LinkCodeNames)
     app.add_directive("api-members", ApiMembers)
     app.connect("autodoc-process-docstring", _plain_bars, priority=400)

@@ -6,8 +6,10 @@ CITATION.cff is validated against the official CFF 1.2.0 JSON schema
 
 from __future__ import annotations
 
+import importlib.metadata
 import importlib.util
 import json
+import re
 import sys
 import tomllib
 from pathlib import Path
@@ -71,6 +73,22 @@ def _release_notes():
     sys.modules["release_notes"] = module
     spec.loader.exec_module(module)
     return module
+
+
+def test_version_is_read_from_pyproject() -> None:
+    """pyproject.toml holds the version; the package reads it from the installed metadata,
+    and the changelog has a dated section for it under an Unreleased one."""
+    import turntable
+
+    version = _pyproject()["project"]["version"]
+    assert turntable.__version__ == importlib.metadata.version("turntable") == version
+    assert not re.search(
+        r"^__version__ = [\"']", (ROOT / "src/turntable/__init__.py").read_text(), re.M
+    )
+    changelog = (ROOT / "CHANGELOG.md").read_text(encoding="utf-8")
+    headings = re.findall(r"^## \[(.+?)\](?: - (\d{4}-\d{2}-\d{2}))?$", changelog, re.M)
+    assert headings[:2] == [("Unreleased", ""), (version, _cff()["date-released"])]
+    assert _release_notes().section(changelog, version).strip()
 
 
 @pytest.mark.parametrize(

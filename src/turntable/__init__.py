@@ -1,12 +1,14 @@
-"""A ball slipping with viscous friction on a uniformly rotating plane.
+r"""A ball slipping with viscous friction on a uniformly rotating plane.
 
 Exact, numerically stable solution of the linear model of T. B. Ivanova,
 "The Rolling of a Homogeneous Ball with Slipping on a Horizontal Rotating
 Plane", Russian Journal of Nonlinear Dynamics 15(2), 171-178 (2019).
 
-States are z = (x, y, vx, vy, wx, wy), dimensionless (length R, time
-1/Omega, mass m).
+States are :math:`z = (x, y, v_x, v_y, \omega_x, \omega_y)`, dimensionless (length
+:math:`R`, time :math:`1/\Omega`, mass :math:`m`).
 """
+
+from importlib.metadata import version as _version
 
 from turntable.limits import (
     LimitErrorFit,
@@ -41,7 +43,8 @@ from turntable.spectrum import (
     system_matrix,
 )
 
-__version__ = "0.1.0"
+# The version of the installed distribution (``version`` of ``pyproject.toml``).
+__version__ = _version("turntable")
 
 __all__ = [
     "GOLDEN",

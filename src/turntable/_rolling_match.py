@@ -18,7 +18,7 @@ from turntable.spectrum import _spectrum
 
 
 def power_rolling(z: ArrayLike, delta: float) -> NDArray[np.float64]:
-    r"""Return the power dissipated by the rolling-resistance torque, delta |w_h|^2.
+    r"""Return the power dissipated by the rolling-resistance torque, :math:`\delta |w_h|^2`.
 
     Parameters
     ----------
@@ -49,7 +49,7 @@ def power_rolling(z: ArrayLike, delta: float) -> NDArray[np.float64]:
 
 
 def power_slipping(z: ArrayLike, mu0: float) -> NDArray[np.float64]:
-    r"""Return the power dissipated by viscous slipping friction, mu0 |u|^2.
+    r"""Return the power dissipated by viscous slipping friction, :math:`\mu_0 |u|^2`.
 
     Parameters
     ----------
@@ -103,7 +103,8 @@ def _slipping_mode(mu0: ArrayLike, k: ArrayLike) -> tuple[NDArray[np.float64], .
 
 
 def equal_power_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
-    r"""Return delta at which rolling along the slipping path dissipates the slipping power.
+    r"""Return :math:`\delta` at which rolling along the slipping path dissipates the slipping
+    power.
 
     Parameters
     ----------
@@ -162,7 +163,7 @@ def equal_power_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
 
 
 def own_spin_power_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
-    r"""Return delta that matches the slipping power with the torque on the slipping spin.
+    r"""Return :math:`\delta` that matches the slipping power with the torque on the slipping spin.
 
     Parameters
     ----------
@@ -199,7 +200,7 @@ def own_spin_power_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
 
 
 def equal_decay_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
-    r"""Return delta at which the rolling centre decays at the slipping |alpha2|.
+    r"""Return :math:`\delta` at which the rolling centre decays at the slipping :math:`|\alpha_2|`.
 
     Parameters
     ----------

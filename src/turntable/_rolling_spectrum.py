@@ -72,6 +72,15 @@ class RollingSpectrum(NamedTuple):
     sigma_c, nu_c : numpy.ndarray
         Decay rate (< 0) and rate of turning of the spiral's centre,
         :math:`\lambda_c = \sigma_c + i\nu_c`.
+
+    Examples
+    --------
+    The spiral grows and its centre decays:
+
+    >>> from turntable import rolling
+    >>> s = rolling.spectrum(0.1, 0.4)
+    >>> bool(s.sigma_g > 0), bool(s.sigma_c < 0)
+    (True, True)
     """
 
     sigma_g: NDArray[np.float64]
@@ -103,7 +112,8 @@ def _spectrum_rolling(delta: NDArray[np.float64], k: NDArray[np.float64]) -> Rol
 
 
 def spectrum(delta: ArrayLike, k: ArrayLike) -> RollingSpectrum:
-    r"""Return sigma_g, nu_g, sigma_c, nu_c of the rolling model.
+    r"""Return :math:`\sigma_g`, :math:`\nu_g`, :math:`\sigma_c`, :math:`\nu_c` of the rolling
+    model.
 
     Parameters
     ----------
@@ -114,6 +124,10 @@ def spectrum(delta: ArrayLike, k: ArrayLike) -> RollingSpectrum:
     Returns
     -------
     RollingSpectrum
+
+    See Also
+    --------
+    turntable.spectrum : The rates of the slipping ball.
 
     Notes
     -----
@@ -172,7 +186,7 @@ def eigenvalues(delta: ArrayLike, k: ArrayLike) -> NDArray[np.complex128]:
 
 
 def growth_rate(delta: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
-    r"""Return sigma_g, the growth rate per unit time of the spiral's radius.
+    r"""Return :math:`\sigma_g`, the growth rate per unit time of the spiral's radius.
 
     Parameters
     ----------
@@ -202,7 +216,7 @@ def growth_rate(delta: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
 
 
 def log_growth_per_turn(delta: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
-    r"""Return 2 pi sigma_g / nu_g, the logarithm of the spiral's growth per turn.
+    r"""Return :math:`2\pi\sigma_g/\nu_g`, the logarithm of the spiral's growth per turn.
 
     Parameters
     ----------
@@ -231,7 +245,7 @@ def log_growth_per_turn(delta: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
 
 
 def centre_decay_rate(delta: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
-    r"""Return |sigma_c|, the rate at which the spiral's centre approaches the axis.
+    r"""Return :math:`|\sigma_c|`, the rate at which the spiral's centre approaches the axis.
 
     Parameters
     ----------

@@ -48,7 +48,21 @@ _MARK = re.compile(rf"\b{SYNTHETIC_MARK}\b")
 
 
 class FilmError(ValueError):
-    """A film file that cannot be used; the message names file, line and column."""
+    """A film file that cannot be used; the message names file, line and column.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> from turntable.film import FilmError, read_film
+    >>> path = os.path.join(tempfile.mkdtemp(), "film.csv")
+    >>> with open(path, "w") as f:
+    ...     _ = f.write("t,x\\n0,0.05\\n")
+    >>> try:
+    ...     read_film(path)
+    ... except FilmError as error:
+    ...     print("FilmError:", str(error).split(": ", 1)[1])
+    FilmError: the header has no column 'y' (it names 't', 'x'; columns t, x, y are needed)
+    """
 
 
 class Film(NamedTuple):
@@ -63,6 +77,15 @@ class Film(NamedTuple):
     synthetic : bool
         Whether the film is marked as simulated: `read_film` sets it for a file with a
         comment line containing the word SYNTHETIC (as `turntable.fit.synthetic_header` writes).
+
+    Examples
+    --------
+    The film that ships with the package:
+
+    >>> from turntable.film import EXAMPLE_FILM, read_film
+    >>> film = read_film(EXAMPLE_FILM)
+    >>> film.t.size, film.synthetic
+    (301, True)
     """
 
     t: NDArray[np.float64]
@@ -85,6 +108,13 @@ class Setup(NamedTuple):
         Inertia ratio :math:`I / (m R^2)` of the ball (2/5 for a homogeneous ball).
     axis : tuple of float
         Position (x, y) of the turntable's axis in the film's coordinates, m.
+
+    Examples
+    --------
+    >>> from turntable.film import Setup, rpm_to_omega
+    >>> setup = Setup(radius=0.005, omega=rpm_to_omega(33.3))
+    >>> setup.k, setup.axis
+    (0.4, (0.0, 0.0))
     """
 
     radius: float
@@ -104,6 +134,13 @@ class Camera(NamedTuple):
         Standard deviation of the tracking error of each coordinate of each frame, m.
     duration : float
         Length of the film, s; the frames are at t = i / fps, 0 <= t <= duration.
+
+    Examples
+    --------
+    >>> from turntable.film import Camera, frame_times
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=10.0)
+    >>> frame_times(camera).size
+    301
     """
 
     fps: float
@@ -112,12 +149,17 @@ class Camera(NamedTuple):
 
 
 def rpm_to_omega(rpm: float) -> float:
-    """Return the angular velocity in rad/s of ``rpm`` revolutions per minute (2 pi rpm / 60).
+    r"""Return :math:`\Omega = 2\pi\,\mathrm{rpm}/60`, rad/s, of ``rpm`` revolutions per minute.
 
     Parameters
     ----------
     rpm : float
         Revolutions per minute, finite and > 0.
+
+    Returns
+    -------
+    float
+        Ω, rad/s.
 
     Examples
     --------
@@ -135,6 +177,16 @@ def check_setup(setup: Setup) -> Setup:
     ----------
     setup : Setup
         Ball and turntable.
+
+    Returns
+    -------
+    Setup
+        The same values, as floats.
+
+    Raises
+    ------
+    ValueError
+        If a number is not finite, or the radius, Ω or k is not > 0.
 
     Examples
     --------
@@ -156,12 +208,17 @@ def check_setup(setup: Setup) -> Setup:
 
 
 def frame_times(camera: Camera) -> NDArray[np.float64]:
-    """Return the times i / fps of the frames in [0, duration], s.
+    r"""Return the times :math:`i/f`, s, of the frames in [0, ``duration``] at ``fps`` :math:`f`.
 
     Parameters
     ----------
     camera : Camera
         Frame rate and duration.
+
+    Returns
+    -------
+    numpy.ndarray
+        The times, s, from 0.
 
     Examples
     --------
@@ -197,6 +254,10 @@ def state_from_si(
     -------
     numpy.ndarray
         (r - axis) / R, v / (R Omega), w / Omega.
+
+    See Also
+    --------
+    turntable.film.state_to_si : The inverse.
 
     Notes
     -----
@@ -239,10 +300,17 @@ def state_to_si(state: ArrayLike, setup: Setup) -> dict[str, list[float]]:
     setup : Setup
         Ball and turntable (radius, Omega, axis).
 
+    Returns
+    -------
+    dict
+        ``position_m``, ``velocity_m_s`` and ``spin_rad_s``, each a list of two floats.
+
+    See Also
+    --------
+    state_from_si : The inverse.
+
     Examples
     --------
-    The inverse of `state_from_si`:
-
     >>> from turntable.film import Setup, state_to_si
     >>> state_to_si([10, 0, 0, 1, 0, 0], Setup(radius=0.005, omega=2.0))
     {'position_m': [0.05, 0.0], 'velocity_m_s': [0.0, 0.01], 'spin_rad_s': [0.0, 0.0]}
@@ -257,7 +325,17 @@ def state_to_si(state: ArrayLike, setup: Setup) -> dict[str, list[float]]:
 
 
 class Rig(NamedTuple):
-    """A filmed experiment: ball and turntable, camera, the ball's start, its mass (kg)."""
+    """A filmed experiment: ball and turntable, camera, the ball's start, its mass (kg).
+
+    Examples
+    --------
+    >>> from turntable.film import Camera, Rig, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.49)
+    >>> start = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> rig = Rig(setup, Camera(fps=240.0, noise=2e-4, duration=10.0), start, mass=0.00411)
+    >>> rig.state0
+    array([10.,  0.,  0.,  0.,  0.,  0.])
+    """
 
     setup: Setup
     camera: Camera
@@ -354,6 +432,10 @@ def read_film(
         increase, a value outside ``bounds``, or fewer than ``min_rows`` frames.  The
         message starts with ``<file>:<line>:`` and names the column and its field number
         where there is one.
+
+    See Also
+    --------
+    turntable.film.write_film : The file it reads.
 
     Examples
     --------
@@ -465,6 +547,10 @@ def write_film(
         Lines written first, each prefixed with ``"# "``.
     digits : int
         Significant digits of each number.
+
+    See Also
+    --------
+    turntable.film.read_film : Reads it back.
 
     Examples
     --------

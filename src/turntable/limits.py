@@ -16,7 +16,8 @@ from turntable.spectrum import Expansion
 
 
 def small_friction_expansion(mu0: ArrayLike, k: ArrayLike) -> Expansion:
-    r"""Return the leading small-mu0 behaviour of alpha1, alpha2 and beta.
+    r"""Return the leading small-:math:`\mu_0` behaviour of :math:`\alpha_1`, :math:`\alpha_2` and
+    :math:`\beta`.
 
     Parameters
     ----------
@@ -28,6 +29,10 @@ def small_friction_expansion(mu0: ArrayLike, k: ArrayLike) -> Expansion:
     Expansion
         :math:`\alpha_1 = \sqrt{\mu_0/2} - \mu`, :math:`\alpha_2 = -\sqrt{\mu_0/2} - \mu` and
         :math:`\beta = \sqrt{\mu_0/2}`, with :math:`\mu = \mu_0 (k + 1) / (2 k)` of (2.2).
+
+    See Also
+    --------
+    turntable.spectrum : The exact rates.
 
     Notes
     -----
@@ -63,7 +68,7 @@ def small_friction_expansion(mu0: ArrayLike, k: ArrayLike) -> Expansion:
 
 
 def nonholonomic_period(k: ArrayLike) -> NDArray[np.float64]:
-    r"""Return the period 2 pi (k + 1) / k of the no-slip motion of the centre.
+    r"""Return the period :math:`2\pi (k + 1) / k` of the no-slip motion of the centre.
 
     Parameters
     ----------
@@ -110,6 +115,11 @@ def limit_error(z0: ArrayLike, t: ArrayLike, mu0: ArrayLike, k: float) -> NDArra
         Same shape as ``mu0``: :math:`\max_t |r(t; \mu_0) - r_{nh}(t)|`, with r the
         centre from `solve` and :math:`r_{nh}` the centre from `nonholonomic`.
 
+    See Also
+    --------
+    turntable.limit_error_fit : Its power law in the friction.
+    turntable.nonholonomic : The limit.
+
     Notes
     -----
     Section 3, (3.3): on a fixed interval the solution tends to the no-slip one
@@ -138,7 +148,7 @@ LIMIT_FIT_TIMES = 1001
 
 
 class LimitErrorFit(NamedTuple):
-    r"""The largest position error of the no-slip limit and its power law in mu0.
+    r"""The largest position error of the no-slip limit and its power law in :math:`\mu_0`.
 
     Attributes
     ----------
@@ -150,6 +160,13 @@ class LimitErrorFit(NamedTuple):
         p of the least-squares line :math:`\ln e = \ln c + p \ln \mu_0` (e the error).
     prefactor : float
         c of that line.
+
+    Examples
+    --------
+    >>> from turntable import limit_error_fit
+    >>> result = limit_error_fit([1, 1, 0, 0, 0, 1], 20.0, [10.0, 30.0, 100.0], 0.4)
+    >>> print(f"order {result.order:.2f}, prefactor {result.prefactor:.2f}")
+    order -1.01, prefactor 0.49
     """
 
     mu0: NDArray[np.float64]
@@ -159,7 +176,8 @@ class LimitErrorFit(NamedTuple):
 
 
 def limit_error_fit(z0: ArrayLike, t_end: float, mu0: ArrayLike, k: float) -> LimitErrorFit:
-    r"""Return the largest position error on [0, t_end] at each mu0 and its fitted order.
+    r"""Return the largest position error on :math:`[0, t_\mathrm{end}]` at each :math:`\mu_0` and
+    its fitted order.
 
     Parameters
     ----------
@@ -175,6 +193,10 @@ def limit_error_fit(z0: ArrayLike, t_end: float, mu0: ArrayLike, k: float) -> Li
     Returns
     -------
     LimitErrorFit
+
+    See Also
+    --------
+    turntable.limit_error : The error at one friction.
 
     Notes
     -----

@@ -30,6 +30,13 @@ class NewtonEulerResult:
         Centre position, centre velocity and angular velocity, shape (n, 3).
     normal : numpy.ndarray
         Normal reaction N (its component along gamma), shape (n,).
+
+    Examples
+    --------
+    >>> from turntable import newton_euler
+    >>> result = newton_euler([1.0, 1.0, 0.0, 0.0, 0.0, 1.0], [0.0, 1.0], 1.0, 0.4)
+    >>> result.r.shape, result.normal.shape
+    ((2, 3), (2,))
     """
 
     t: NDArray[np.float64]
@@ -83,6 +90,10 @@ def newton_euler(
     Returns
     -------
     NewtonEulerResult
+
+    See Also
+    --------
+    turntable.solve : The closed form of the reduced equations.
 
     Notes
     -----

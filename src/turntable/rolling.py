@@ -170,7 +170,19 @@ def _exp(lam: complex, t: NDArray[np.float64], amp: complex) -> NDArray[np.compl
 
 
 class RollingModes(NamedTuple):
-    """The growing spiral and its moving centre, each of shape (len(t), 6)."""
+    """The growing spiral and its moving centre, each of shape (len(t), 6).
+
+    Examples
+    --------
+    The spiral and its centre add up to the solution:
+
+    >>> import numpy as np
+    >>> from turntable import rolling
+    >>> z0 = rolling.state_on_constraint([0, 0, 1, 0])
+    >>> modes = rolling.modal_terms(z0, [0.0, 10.0], 0.1, 0.4)
+    >>> bool(np.allclose(modes.spiral + modes.centre, rolling.solve(z0, [0.0, 10.0], 0.1, 0.4)))
+    True
+    """
 
     spiral: NDArray[np.float64]
     centre: NDArray[np.float64]
@@ -249,6 +261,11 @@ def solve(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> NDArray[np.flo
         For bad input, a z0 with slip, or times at which the growing mode
         overflows (the message names the largest representable t).
 
+    See Also
+    --------
+    turntable.rolling.modal_terms : The same solution as spiral and centre.
+    turntable.solve : The slipping ball.
+
     Notes
     -----
     :math:`r(t) = A_g e^{\lambda_g t} + A_c e^{\lambda_c t}`, :math:`v = \dot r`,
@@ -281,6 +298,16 @@ def spiral_centre(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> NDArra
     delta, k : float
         Rolling-resistance coefficient and inertia ratio, finite and > 0.
 
+    Returns
+    -------
+    numpy.ndarray
+        (x, y) of the centre at each time, shape (len(t), 2).
+
+    See Also
+    --------
+    modal_terms : The spiral and its centre apart.
+    turntable.spiral_centre : The fixed centre of the slipping ball's spiral.
+
     Notes
     -----
     :math:`r_c(t) = A_c e^{\lambda_c t}`: it moves, spiralling into the turntable's
@@ -306,7 +333,8 @@ COMPARISONS = ("equal_coefficient", "equal_power", "equal_decay")
 
 
 def matched_delta(mu0: ArrayLike, k: ArrayLike, comparison: str) -> NDArray[np.float64]:
-    """Return the rolling coefficient delta that corresponds to mu0 under a comparison.
+    r"""Return the rolling coefficient :math:`\delta` that corresponds to :math:`\mu_0` under a
+    comparison.
 
     Parameters
     ----------
@@ -380,7 +408,16 @@ def growth_per_turn_ratio(mu0: ArrayLike, k: ArrayLike, comparison: str) -> NDAr
 
 
 class RollingNewtonEuler(NamedTuple):
-    """Trajectory of the constrained 3-D equations: t (n,), r, v, w (n, 3), force F (n, 3)."""
+    """Trajectory of the constrained 3-D equations: t (n,), r, v, w (n, 3), force F (n, 3).
+
+    Examples
+    --------
+    >>> from turntable import rolling
+    >>> z0 = rolling.state_on_constraint([0, 0, 1, 0])
+    >>> result = rolling.newton_euler(z0, [0.0, 1.0], 0.1, 0.4)
+    >>> result.r.shape, result.force.shape
+    ((2, 3), (2, 3))
+    """
 
     t: NDArray[np.float64]
     r: NDArray[np.float64]
@@ -431,6 +468,10 @@ def newton_euler(
     Returns
     -------
     RollingNewtonEuler
+
+    See Also
+    --------
+    turntable.rolling.solve : The closed form.
 
     Notes
     -----

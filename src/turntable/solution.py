@@ -51,7 +51,7 @@ def _real_state(
 
 
 def conserved(z: ArrayLike, k: float) -> NDArray[np.float64]:
-    r"""Return the two conserved quantities (k wx - vy, k wy + vx).
+    r"""Return the two conserved quantities :math:`(k\omega_x - v_y, k\omega_y + v_x)`.
 
     Parameters
     ----------
@@ -84,7 +84,7 @@ def conserved(z: ArrayLike, k: float) -> NDArray[np.float64]:
 
 
 def spiral_centre(z0: ArrayLike, k: float) -> NDArray[np.float64]:
-    r"""Return the centre (x0, y0) of the spiral traced by the ball's centre.
+    r"""Return the centre :math:`(x_0, y_0)` of the spiral traced by the ball's centre.
 
     Parameters
     ----------
@@ -97,6 +97,10 @@ def spiral_centre(z0: ArrayLike, k: float) -> NDArray[np.float64]:
     -------
     numpy.ndarray
         ``[x0, y0]``, of shape ``z0.shape[:-1] + (2,)``.
+
+    See Also
+    --------
+    turntable.solve : The motion about it.
 
     Notes
     -----
@@ -162,6 +166,12 @@ def solve(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> NDArray[np.float
         For a bad argument, or a time beyond `max_time` (mu0, k, z0), where
         the growing part :math:`e^{\alpha_1 t}` of the solution overflows a double; the
         message names that largest time.
+
+    See Also
+    --------
+    turntable.modal_terms : The same solution in its fixed, growing and decaying parts.
+    turntable.nonholonomic : Its limit without slipping.
+    turntable.rolling.solve : The rolling ball of the comparison model.
 
     Notes
     -----
@@ -324,7 +334,19 @@ def _solution_matrix(
 
 
 class ModalTerms(NamedTuple):
-    """The three parts of the solution (2.7), each of shape (len(t), 6)."""
+    """The three parts of the solution (2.7), each of shape (len(t), 6).
+
+    Examples
+    --------
+    The three parts add up to the solution:
+
+    >>> import numpy as np
+    >>> from turntable import modal_terms, solve
+    >>> z0, t = [1.0, 1.0, 0.0, 0.0, 0.0, 1.0], np.linspace(0.0, 10.0, 5)
+    >>> terms = modal_terms(z0, t, 1.0, 0.4)
+    >>> bool(np.allclose(terms.centre + terms.plus + terms.minus, solve(z0, t, 1.0, 0.4)))
+    True
+    """
 
     centre: NDArray[np.float64]
     plus: NDArray[np.float64]
@@ -350,6 +372,10 @@ def modal_terms(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> ModalTerms
         the part on the modes :math:`\alpha_1 \pm i\beta` and the part on the modes
         :math:`\alpha_2 \pm i\beta`.  They sum to `solve` (up to rounding relative to
         the size of the terms, which grow like :math:`\mu_0^{-1/2}` as :math:`\mu_0 \to 0`).
+
+    See Also
+    --------
+    turntable.solve : Their sum.
 
     Notes
     -----
@@ -435,6 +461,15 @@ def slip_velocity(z: ArrayLike) -> NDArray[np.float64]:
     z : array_like
         State(s) with last axis (x, y, vx, vy, wx, wy).
 
+    Returns
+    -------
+    numpy.ndarray
+        (ux, uy) on the last axis, the other axes those of ``z``.
+
+    See Also
+    --------
+    turntable.rolling.state_on_constraint : A state with u = 0.
+
     Notes
     -----
     Section 1 (dimensionless): u is the velocity of the ball's contact
@@ -453,7 +488,7 @@ def slip_velocity(z: ArrayLike) -> NDArray[np.float64]:
 
 
 def nonholonomic(z0: ArrayLike, t: ArrayLike, k: float) -> NDArray[np.float64]:
-    r"""Return the no-slip (mu0 -> infinity) motion started from z0.
+    r"""Return the no-slip (:math:`\mu_0 \to \infty`) motion started from ``z0``.
 
     Parameters
     ----------
@@ -470,6 +505,11 @@ def nonholonomic(z0: ArrayLike, t: ArrayLike, k: float) -> NDArray[np.float64]:
     -------
     numpy.ndarray
         Shape (len(t), 6).
+
+    See Also
+    --------
+    turntable.solve : The slipping ball.
+    turntable.nonholonomic_period : The period of this motion.
 
     Notes
     -----

@@ -46,6 +46,10 @@ def system_matrix(mu0: float, k: float) -> NDArray[np.float64]:
     numpy.ndarray
         The matrix L, shape (6, 6), acting on z = (x, y, vx, vy, wx, wy).
 
+    See Also
+    --------
+    turntable.eigenvalues : Its nonzero eigenvalues.
+
     Notes
     -----
     Equation (1.7) of the paper:
@@ -99,6 +103,14 @@ class Spectrum(NamedTuple):
         :math:`a = \sqrt{(\sqrt{1 + \varepsilon^2} + 1) / 2}` of (2.5).
     b : numpy.ndarray
         :math:`b = \sqrt{(\sqrt{1 + \varepsilon^2} - 1) / 2}` of (2.5).
+
+    Examples
+    --------
+    >>> from turntable import spectrum
+    >>> s = spectrum(1.0, 0.4)
+    >>> print(f"alpha1 {float(s.alpha1):.4f}, alpha2 {float(s.alpha2):.4f}, "
+    ...       f"beta {float(s.beta):.4f}")
+    alpha1 0.0226, alpha2 -3.5226, beta 0.2821
     """
 
     alpha1: NDArray[np.float64]
@@ -125,7 +137,8 @@ def _spectrum(mu0: NDArray[np.float64], k: NDArray[np.float64]) -> Spectrum:
 
 
 def spectrum(mu0: ArrayLike, k: ArrayLike) -> Spectrum:
-    r"""Return alpha1, alpha2, beta and the auxiliary mu, eps, a, b.
+    r"""Return :math:`\alpha_1`, :math:`\alpha_2`, :math:`\beta` and the auxiliary :math:`\mu`,
+    :math:`\varepsilon`, :math:`a`, :math:`b`.
 
     Parameters
     ----------
@@ -137,6 +150,12 @@ def spectrum(mu0: ArrayLike, k: ArrayLike) -> Spectrum:
     -------
     Spectrum
         Named tuple of arrays of the broadcast shape.
+
+    See Also
+    --------
+    turntable.eigenvalues : The same rates as complex eigenvalues.
+    turntable.small_friction_expansion : Its leading terms at small friction.
+    turntable.large_friction_expansion : Its leading terms at large friction.
 
     Notes
     -----
@@ -179,6 +198,11 @@ def eigenvalues(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.complex128]:
         axis is :math:`(\alpha_1 + i\beta, \alpha_1 - i\beta, \alpha_2 + i\beta,
         \alpha_2 - i\beta)`.
 
+    See Also
+    --------
+    turntable.spectrum : The same rates as real numbers.
+    turntable.system_matrix : The matrix whose eigenvalues they are.
+
     Notes
     -----
     Equation (2.4): :math:`\lambda_{1,2} = \mu (-1 + \sqrt{1 \pm i\varepsilon})` and
@@ -188,14 +212,15 @@ def eigenvalues(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.complex128]:
 
     Examples
     --------
-    Two pairs alpha1 +- i beta and alpha2 +- i beta, with alpha1 + alpha2 = -mu0 (k + 1) / k:
+    Two pairs :math:`\alpha_1 \pm i\beta` and :math:`\alpha_2 \pm i\beta`, with
+    :math:`\alpha_1 + \alpha_2 = -\mu_0 (k + 1) / k` to rounding:
 
     >>> from turntable import eigenvalues
     >>> lam = eigenvalues(1.0, 0.4)
     >>> lam.round(4)
     array([ 0.0226+0.2821j,  0.0226-0.2821j, -3.5226+0.2821j, -3.5226-0.2821j])
-    >>> print(f"{lam[0].real + lam[2].real:.12f}")
-    -3.500000000000
+    >>> bool(abs(lam[0].real + lam[2].real + 3.5) < 1e-12)
+    True
     """
     s = spectrum(mu0, k)
     out = np.empty((*s.alpha1.shape, 4), dtype=complex)
@@ -275,7 +300,17 @@ def log_growth_per_turn(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
 
 
 class Peak(NamedTuple):
-    """Location and height of the maximum of alpha1 over mu0."""
+    r"""Location and height of the maximum of :math:`\alpha_1` over :math:`\mu_0`.
+
+    Examples
+    --------
+    The largest growth rate at k = 0.4 (Figure 2):
+
+    >>> from turntable import alpha1_peak
+    >>> peak = alpha1_peak(0.4)
+    >>> print(f"alpha1 = {float(peak.alpha1):.4f} at mu0 = {float(peak.mu0):.4f}")
+    alpha1 = 0.0858 at mu0 = 0.0793
+    """
 
     mu0: NDArray[np.float64]
     alpha1: NDArray[np.float64]
@@ -283,7 +318,8 @@ class Peak(NamedTuple):
 
 
 def alpha1_peak(k: ArrayLike) -> Peak:
-    r"""Return the friction mu0 at which alpha1 is largest, and alpha1 there.
+    r"""Return the friction :math:`\mu_0` at which :math:`\alpha_1` is largest, and :math:`\alpha_1`
+    there.
 
     Parameters
     ----------
@@ -296,6 +332,10 @@ def alpha1_peak(k: ArrayLike) -> Peak:
         :math:`\mu_0 = 2 k^2 / ((k + 1)^2 \varphi^{3/2})` and
         :math:`\alpha_1 = k / (k + 1)\, \varphi^{-5/2}`, with :math:`\varphi` the golden
         ratio, and the universal :math:`\varepsilon = 2 \varphi^{3/2}` at the peak.
+
+    See Also
+    --------
+    turntable.spectrum : The rates at any friction.
 
     Notes
     -----
@@ -321,7 +361,18 @@ def alpha1_peak(k: ArrayLike) -> Peak:
 
 
 class Expansion(NamedTuple):
-    """Large-mu0 expansion (3.2) of alpha1, alpha2 and beta, to O(1/mu0)."""
+    r"""Large-:math:`\mu_0` expansion (3.2) of :math:`\alpha_1`, :math:`\alpha_2` and :math:`\beta`,
+    to :math:`O(1/\mu_0)`.
+
+    Examples
+    --------
+    Close to the exact rates at a large friction:
+
+    >>> from turntable import large_friction_expansion, spectrum
+    >>> approx, exact = large_friction_expansion(100.0, 0.4), spectrum(100.0, 0.4)
+    >>> print(f"alpha1 {float(approx.alpha1):.4e} (exact {float(exact.alpha1):.4e})")
+    alpha1 2.3324e-04 (exact 2.3324e-04)
+    """
 
     alpha1: NDArray[np.float64]
     alpha2: NDArray[np.float64]
@@ -342,6 +393,10 @@ def large_friction_expansion(mu0: ArrayLike, k: ArrayLike) -> Expansion:
         :math:`\alpha_1 = k^3 / (\mu_0 (k+1)^3)`,
         :math:`\alpha_2 = -\mu_0 (k+1) / k - k^3 / (\mu_0 (k+1)^3)`,
         :math:`\beta = k / (k+1)`.
+
+    See Also
+    --------
+    turntable.spectrum : The exact rates.
 
     Notes
     -----

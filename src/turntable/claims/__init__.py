@@ -89,6 +89,15 @@ ORDER: tuple[str, ...] = tuple(_BY_ID)
 def claim_ids() -> list[str]:
     """Return every claim id, in the order of the paper.
 
+    Returns
+    -------
+    list of str
+        The ids, as in `ORDER`.
+
+    See Also
+    --------
+    get : The claim of an id.
+
     Examples
     --------
     >>> from turntable import claims
@@ -153,6 +162,11 @@ def evaluate(claim_id: str, params: Mapping[str, Any] | None = None) -> dict[str
         If the check returns a verdict not in `VERDICTS`, no reproduced value under the
         claim's ``decisive`` key, or, with the expected verdict, no bound on it.
 
+    See Also
+    --------
+    turntable.claims.evaluate_all : Every claim.
+    turntable.claims.get : The claim itself.
+
     Examples
     --------
     >>> from turntable import claims
@@ -212,6 +226,10 @@ def evaluate_all(params: Mapping[str, Any] | None = None) -> list[dict[str, Any]
     -------
     list of dict
         One record per claim, in the order of `ORDER` (see `evaluate`).
+
+    See Also
+    --------
+    turntable.claims.evaluate : One claim.
 
     Examples
     --------

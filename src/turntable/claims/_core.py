@@ -140,7 +140,17 @@ def random_states(params: Mapping[str, Any]) -> NDArray[np.float64]:
 
 @dataclass(frozen=True)
 class Where:
-    """Location of a claim in the paper."""
+    """Location of a claim in the paper.
+
+    Examples
+    --------
+    >>> from turntable import claims
+    >>> where = claims.get("solution.centre").where
+    >>> where
+    Where(section='Sec. 2', equations='(2.8)', figure='Fig. 4')
+    >>> where.label()
+    'Sec. 2, (2.8), Fig. 4'
+    """
 
     section: str
     equations: str = ""
@@ -288,6 +298,13 @@ class Outcome:
         holds; for ``corrected``, the corrected formula.
     quantities : dict
         What the reproduced values the article prints are (`Quantity`), under their keys.
+
+    Examples
+    --------
+    >>> from turntable import claims
+    >>> outcome = claims.get("spectrum.kernel").check(claims.resolve_params())
+    >>> outcome.verdict, all(name in outcome.reproduced for name in outcome.tolerance)
+    ('confirmed', True)
     """
 
     verdict: Verdict
@@ -341,6 +358,13 @@ class Claim:
         The key of the one reproduced value, with its bound in the ``tolerance``, that
         decides the ``expected`` verdict (``turntable claims`` prints it, one line per
         claim).
+
+    Examples
+    --------
+    >>> from turntable import claims
+    >>> claim = claims.get("solution.centre")
+    >>> claim.source, claim.expected
+    ('paper', 'corrected')
     """
 
     id: str

@@ -89,6 +89,10 @@ def predicted_stderr(
     ValueError
         For fewer coordinates than parameters, or bad numbers.
 
+    See Also
+    --------
+    turntable.fit.measurability : Over a grid of frictions, with the selection.
+
     Notes
     -----
     Fisher information :math:`F = J^T J / \sigma^2` over the frames, J the derivatives of
@@ -131,6 +135,18 @@ class Distinguishability(NamedTuple):
         smaller than the number of coordinates.
     selection_probability : float
         Probability that AICc selects the slipping model.
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> d = fit.distinguishability(3.0, z0, setup, camera)
+    >>> print(f"{d.rms_distance * 1e3:.2f} mm apart, "
+    ...       f"expected AICc difference {d.expected_aicc_difference:.0f}")
+    0.12 mm apart, expected AICc difference 35
     """
 
     delta: float
@@ -164,6 +180,10 @@ def distinguishability(
         If the camera gives fewer frames than `min_frames` (too few for AICc to compare
         the 7 parameters of the slipping model with the 5 of the rolling one), or bad
         numbers.
+
+    See Also
+    --------
+    turntable.fit.measurability : Over a grid of frictions.
 
     Notes
     -----
@@ -237,7 +257,7 @@ def distinguishability(
 
 
 class Measurability(NamedTuple):
-    """`measurability` over a grid of mu0 (1-D arrays of the grid's length).
+    r"""`measurability` over a grid of :math:`\mu_0` (1-D arrays of the grid's length).
 
     Attributes
     ----------
@@ -248,6 +268,17 @@ class Measurability(NamedTuple):
         grid's value.
     closest_delta, rms_distance, expected_aicc_difference, selection_probability
         `Distinguishability` of each slipping ball from the closest rolling motion.
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> table = fit.measurability([0.3, 3.0, 30.0], z0, setup, camera)
+    >>> table.selection_probability.round(2)
+    array([1.  , 1.  , 0.17])
     """
 
     mu0: NDArray[np.float64]
@@ -265,7 +296,7 @@ def measurability(
     setup: Setup,
     camera: Camera,
 ) -> Measurability:
-    """Return what a camera can measure, for each mu0 of a grid.
+    r"""Return what a camera can measure, for each :math:`\mu_0` of a grid.
 
     Parameters
     ----------
@@ -284,6 +315,11 @@ def measurability(
         For each mu0: `predicted_stderr` of mu0; for delta equal to it, the rolling
         ball's `predicted_stderr` of delta; and the `distinguishability` of the slipping
         ball from the closest rolling motion.
+
+    See Also
+    --------
+    turntable.fit.predicted_stderr : The standard error at one friction.
+    turntable.fit.distinguishability : Slipping against rolling at one friction.
 
     Examples
     --------
@@ -318,7 +354,8 @@ def measurability(
 
 
 def indistinguishable_above(table: Measurability, probability: float) -> float:
-    """Return the mu0 above which AICc selects the slipping model less often than ``probability``.
+    r"""Return the :math:`\mu_0` above which AICc selects the slipping model less often than
+    ``probability``.
 
     Parameters
     ----------
@@ -363,7 +400,7 @@ def indistinguishable_above(table: Measurability, probability: float) -> float:
 def reliable_range(
     mu0: ArrayLike, relative_stderr: ArrayLike, level: float
 ) -> tuple[float, float] | None:
-    """Return the range of mu0 where the predicted relative error stays below ``level``.
+    r"""Return the range of :math:`\mu_0` where the predicted relative error stays below ``level``.
 
     Parameters
     ----------

@@ -61,7 +61,7 @@ def frame_step(film: Film, setup: Setup) -> float:
 
 
 class Consistency(NamedTuple):
-    """The fit repeated with Omega and the axis free: are the given values right?
+    r"""The fit repeated with :math:`\Omega` and the axis free: are the given values right?
 
     Attributes
     ----------
@@ -84,6 +84,19 @@ class Consistency(NamedTuple):
         rolling one and the axis was given).
     selection_changed : bool
         Whether ``refit`` decisively selects another model than the fit it checks.
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> film = fit.simulate_film("slipping", 3.0, z0, setup, camera, seed=1)
+    >>> result = fit.fit_film(film, setup)
+    >>> check = fit.consistency(film, setup, result)
+    >>> check.model, check.selection_changed
+    ('slipping', False)
     """
 
     refit: FilmFit
@@ -102,7 +115,7 @@ def consistency(
     fit_omega: bool = False,
     fit_axis: bool = False,
 ) -> Consistency | None:
-    """Check the given Omega and axis: fit again with them free and compare.
+    r"""Check the given :math:`\Omega` and axis: fit again with them free and compare.
 
     Parameters
     ----------

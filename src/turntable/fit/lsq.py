@@ -278,6 +278,10 @@ def fit_model(
     ValueError
         If the film has no more coordinates 2 n than parameters p, or bad numbers.
 
+    See Also
+    --------
+    turntable.fit.fit_film : Both models, and the selection.
+
     Notes
     -----
     Residuals R (r(tau_i) + a - r_i) in m, r from `turntable.solve` (2.7) or
@@ -385,6 +389,12 @@ def fit_film(
     Returns
     -------
     FilmFit
+
+    See Also
+    --------
+    turntable.fit.fit_model : One model alone.
+    turntable.fit.consistency : The fit again with the rate and the axis free.
+    turntable.fit.simulate_film : A film to fit.
 
     Notes
     -----

@@ -90,6 +90,20 @@ class ModelFit(NamedTuple):
         exact fit.
     noise : float
         The film's frame-to-frame noise per coordinate, m (`frame_noise`).
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> film = fit.simulate_film("slipping", 3.0, z0, setup, camera, seed=1)
+    >>> result = fit.fit_film(film, setup)
+    >>> slipping = result.fits["slipping"]
+    >>> print(f"{slipping.coefficient:.2f} ± {slipping.stderr:.2f}, "
+    ...       f"rms {slipping.rms_residual * 1e3:.2f} mm")
+    2.93 ± 0.28, rms 0.17 mm
     """
 
     model: str
@@ -154,7 +168,8 @@ class ModelFit(NamedTuple):
 
 
 def aic(rss: float, n_observations: int, n_params: int) -> float:
-    """Return Akaike's criterion N ln(RSS / N) + 2 (p + 1) of a Gaussian least-squares fit.
+    r"""Return Akaike's criterion :math:`N \ln(\mathrm{RSS}/N) + 2 (p + 1)` of a Gaussian
+    least-squares fit.
 
     The + 1 counts the noise variance, estimated as RSS / N.  An exact fit (RSS = 0,
     only for noiseless data) counts as RSS = the smallest positive double.
@@ -173,6 +188,10 @@ def aic(rss: float, n_observations: int, n_params: int) -> float:
     float
         The criterion.
 
+    See Also
+    --------
+    turntable.fit.aicc : Corrected for a small sample.
+
     Examples
     --------
     >>> from turntable import fit
@@ -184,7 +203,8 @@ def aic(rss: float, n_observations: int, n_params: int) -> float:
 
 
 def aicc(rss: float, n_observations: int, n_params: int) -> float:
-    """Return the small-sample corrected criterion AICc = AIC + 2 K (K + 1) / (N - K - 1).
+    r"""Return the small-sample corrected criterion
+    :math:`\mathrm{AICc} = \mathrm{AIC} + 2K(K + 1)/(N - K - 1)`.
 
     Parameters
     ----------
@@ -200,6 +220,10 @@ def aicc(rss: float, n_observations: int, n_params: int) -> float:
     float
         `aic` plus the correction (Hurvich and Tsai 1989), exact for a linear Gaussian
         model; inf when N <= K + 1, where it is undefined.
+
+    See Also
+    --------
+    turntable.fit.aic : Uncorrected.
 
     Examples
     --------
@@ -339,6 +363,20 @@ class FilmFit(NamedTuple):
         fits the film at least as well as the other (a smaller or equal RSS).
     reason : str
         Why the selection is not decisive ("" if it is).
+
+    Examples
+    --------
+    >>> from turntable import fit
+    >>> from turntable.film import Camera, Setup, state_from_si
+    >>> setup = Setup(radius=0.005, omega=3.5, k=0.4)
+    >>> camera = Camera(fps=30.0, noise=2e-4, duration=2.0)
+    >>> z0 = state_from_si([0.05, 0.0], [0.0, 0.0], [0.0, 0.0], setup)
+    >>> film = fit.simulate_film("slipping", 3.0, z0, setup, camera, seed=1)
+    >>> result = fit.fit_film(film, setup)
+    >>> list(result.fits), result.selected
+    (['slipping', 'rolling_resistance'], 'slipping')
+    >>> print(f"Akaike weight of slipping {result.akaike_weights['slipping']:.3f}")
+    Akaike weight of slipping 1.000
     """
 
     fits: dict[str, ModelFit]

@@ -47,6 +47,10 @@ def simulate_film(
         Frames at t = i / fps; x, y = R (x, y)(Omega t) + axis + noise, each coordinate
         with independent :math:`N(0, \text{noise}^2)` errors; marked ``synthetic``.
 
+    See Also
+    --------
+    turntable.fit.fit_film : Its fit.
+
     Examples
     --------
     >>> from turntable import fit

@@ -23,9 +23,21 @@ __all__ = ["Pose", "back_project", "image_radius", "project", "sphere_centre"]
 
 
 class Pose(NamedTuple):
-    """A camera: focal length (px), tilt and roll (rad), look-at point (m), distance (m),
-    image size (px), and its lens's radial distortion k1: a pinhole image point x (from the
-    principal point, in units of the focal length) is seen at x (1 + k1 |x|^2)."""
+    r"""A camera: focal length (px), tilt and roll (rad), look-at point (m), distance (m),
+    image size (px), and its lens's radial distortion :math:`k_1`: a pinhole image point x (from the
+    principal point, in units of the focal length) is seen at :math:`x (1 + k_1 |x|^2)`.
+
+    Examples
+    --------
+    A camera 0.5 m above the axis, looking straight down:
+
+    >>> from turntable.video.camera import Pose, project
+    >>> pose = Pose(focal=1000.0, tilt=0.0, roll=0.0, look_at=(0.0, 0.0), distance=0.5,
+    ...             size=(1280, 720))
+    >>> project(pose, [[0.0, 0.0], [0.05, 0.0]])
+    array([[639.5, 359.5],
+           [739.5, 359.5]])
+    """
 
     focal: float
     tilt: float
@@ -143,6 +155,10 @@ def project(pose: Pose, points: ArrayLike, height: float = 0.0) -> NDArray[np.fl
     numpy.ndarray
         The image points (u, v), px, of the shape of ``points``.
 
+    See Also
+    --------
+    turntable.video.camera.back_project : The inverse.
+
     Examples
     --------
     The axis seen by a camera 40 cm away looking straight at it is at the image's centre:
@@ -172,6 +188,10 @@ def back_project(pose: Pose, pixels: ArrayLike, height: float = 0.0) -> NDArray[
     numpy.ndarray
         The points (x, y), m, of the shape of ``pixels``.
 
+    See Also
+    --------
+    turntable.video.camera.project : The inverse.
+
     Examples
     --------
     >>> from turntable.video import camera
@@ -200,8 +220,9 @@ def rays(pose: Pose, u: ArrayLike, v: ArrayLike) -> NDArray[np.float64]:
 
 
 def image_radius(pose: Pose, pixels: ArrayLike, radius: float) -> NDArray[np.float64]:
-    """Radius (px) of the image of a sphere of radius ``radius`` whose centre, in the plane
-    z = radius, is seen at ``pixels`` (u, v): f radius / its distance from the camera.
+    r"""Radius (px) of the image of a sphere of radius ``radius`` whose centre, in the plane
+    z = radius, is seen at ``pixels`` (u, v): :math:`f r / d`, :math:`f` the focal length and
+    :math:`d` the centre's distance from the camera.
 
     Parameters
     ----------

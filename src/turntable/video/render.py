@@ -120,6 +120,13 @@ class Scene(NamedTuple):
         Frequency of the flicker (100 Hz for 50 Hz mains, 120 for 60 Hz).
     flicker_phase_deg : float
         Phase of the flicker at t = 0, degrees.
+
+    Examples
+    --------
+    >>> from turntable.video.render import Scene
+    >>> scene = Scene(size=(640, 360), fps=60.0, duration=2.0, clockwise=True)
+    >>> scene.platter_radius, scene.tilt_deg
+    (0.15, 20.0)
     """
 
     platter_radius: float = 0.15
@@ -160,7 +167,19 @@ class Scene(NamedTuple):
 
 
 class Rendered(NamedTuple):
-    """The truth of a rendered video: camera, frame times, the ball's centre (lab, m)."""
+    """The truth of a rendered video: camera, frame times, the ball's centre (lab, m).
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> from turntable.film import Setup
+    >>> from turntable.video.render import Scene, render_video
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "ball_SYNTHETIC.mp4"
+    >>> scene = Scene(size=(320, 180), fps=30.0, duration=0.5)
+    >>> truth = render_video(path, "slipping", 2.0, [7, 0, 0, 0.4, 0, 0], Setup(0.008, 3.49), scene)
+    >>> truth.film.t.size, truth.omega
+    (16, 3.49)
+    """
 
     pose: Pose
     film: Film
@@ -389,6 +408,10 @@ def render_video(
     -------
     Rendered
         The camera and the true positions of the ball's centre at the frame times (m).
+
+    See Also
+    --------
+    turntable.video.track.track_video : Tracks it.
 
     Notes
     -----

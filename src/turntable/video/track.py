@@ -43,7 +43,16 @@ DISTANCE_WARNING_R = 0.05
 
 class FirstLook(NamedTuple):
     """What was found on the first frame: the image (RGB), the rim (None if not found) and
-    the candidates for the ball and the mark (``turntable.video.find.Candidate``)."""
+    the candidates for the ball and the mark (``turntable.video.find.Candidate``).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from turntable.video.track import FirstLook
+    >>> look = FirstLook(np.zeros((270, 480, 3), np.uint8), None, [])
+    >>> look.image.shape, look.rim
+    ((270, 480, 3), None)
+    """
 
     image: NDArray[np.uint8]
     rim: Ellipse | None
@@ -82,6 +91,12 @@ class Track(NamedTuple):
         Every check of `turntable.video.check` (all passed), with its value and limit.
     candidates : list of Candidate
         What was found on the first frame, the ball and the mark among it.
+
+    Examples
+    --------
+    >>> from turntable.video.track import Track
+    >>> Track._fields[:4]
+    ('film', 'calibration', 'info', 'lost')
     """
 
     film: Film
@@ -146,6 +161,10 @@ def track_video(
         first frame, a ball that reaches the platter's rim or the image's edge, a mark lost
         in nearly every frame, a failed check (`turntable.video.check`).  Its ``found`` is
         the `FirstLook`, for drawing.
+
+    See Also
+    --------
+    turntable.video.render.render_video : A SYNTHETIC video to track.
 
     Examples
     --------

@@ -8,6 +8,8 @@ States are z = (x, y, vx, vy, wx, wy), dimensionless (length R, time
 1/Omega, mass m).
 """
 
+from importlib.metadata import PackageNotFoundError, version
+
 from turntable.limits import (
     LimitErrorFit,
     limit_error,
@@ -41,7 +43,10 @@ from turntable.spectrum import (
     system_matrix,
 )
 
-__version__ = "0.1.0"
+try:
+    __version__ = version("turntable")
+except PackageNotFoundError:  # a source tree on sys.path, not installed
+    __version__ = "0+unknown"
 
 __all__ = [
     "GOLDEN",

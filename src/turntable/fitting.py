@@ -105,7 +105,7 @@ def fit_file(
     ----------
     path : str or path-like
         A film (CSV: t, x, y in s and m), a Tracker export, or a video (a suffix of
-        `turntable.video.cli.VIDEO_SUFFIXES`, or ``platter_radius`` given).
+        ``turntable.video.cli.VIDEO_SUFFIXES``, or ``platter_radius`` given).
     radius : float
         The ball's radius, m.
     omega, rpm : float, optional
@@ -124,7 +124,7 @@ def fit_file(
     ball_at, mark_at : tuple of float, optional
         A video's first frame: a pixel (u, v) on the ball, on the mark.
     units, track : str
-        A Tracker export's units (`turntable.tracker.UNITS`) and track.
+        A Tracker export's units (``turntable.tracker.UNITS``) and track.
     progress : callable, optional
         ``progress(stage, done, total)``, called as a video is tracked and as the models
         are fitted.

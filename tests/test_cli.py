@@ -116,7 +116,11 @@ def test_bars_only_on_a_terminal(monkeypatch: pytest.MonkeyPatch) -> None:
         progress("tracking", 3, 10)
         assert "tracking:   0%" in terminal.getvalue()
         progress("fitting", 1, 2)
+        with _terminal.logged("turntable fit"):
+            logging.getLogger("turntable.fitting").warning("a note")
     assert "fitting:   0%" in terminal.getvalue()
+    # the bar is cleared before a log line, which has a line of its own
+    assert "\rturntable fit: warning: a note\n" in terminal.getvalue()
 
 
 def _stderr_of(args: list[str], terminal: bool) -> str:

@@ -27,7 +27,17 @@ class _Format(logging.Formatter):
 
 
 class _Stderr(logging.StreamHandler):
-    """A handler that writes to the `sys.stderr` of the moment it emits."""
+    """A handler that writes to the `sys.stderr` of the moment it emits, above the progress
+    bars."""
+
+    def emit(self, record: logging.LogRecord) -> None:
+        if "tqdm" not in sys.modules:
+            super().emit(record)
+            return
+        from tqdm import tqdm
+
+        with tqdm.external_write_mode(file=sys.stderr):
+            super().emit(record)
 
     @property
     def stream(self) -> Any:

@@ -336,7 +336,8 @@ def main(argv: Sequence[str] | None = None) -> int:
 
             return track_command(args, progress)
         except InputError as exc:
-            progress is not None and progress.close()
+            if progress is not None:
+                progress.close()
             _fail(f"{prog}: error: {exc}")
 
 

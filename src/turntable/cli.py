@@ -8,8 +8,8 @@ stderr and exit status 2.
 
 ``turntable fit DATA.csv --radius R (--omega W | --rpm N) [--k K] [--axis X Y] [--mass M]
 [--fit-omega] [--fit-axis] [--plot FIG.png]`` fits the slipping and the rolling-resistance
-models to a tracked trajectory (`turntable.fit.fit_film`) and prints one JSON object on
-stdout (`turntable.fit.result_json`).
+models to a tracked trajectory or a video (`turntable.fitting.fit_file`) and prints one
+JSON object on stdout (`turntable.fit.result_json`).
 
 Bad input (a file that cannot be read or parsed, see `turntable.film.read_film`; a
 negative, zero or non-finite number; a value too large for the fit; too few frames) gets a

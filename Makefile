@@ -67,19 +67,19 @@ $(UV): constraints.txt
 	touch $(UV)
 
 $(BUILD_STAMP): pyproject.toml constraints.txt $(UV)
-	$(UV_INSTALL) -e ".[workflow,video]"
+	$(UV_INSTALL) -e ".[workflow,video,cli]"
 	touch $(BUILD_STAMP)
 
 $(NOTEBOOKS_STAMP): $(BUILD_STAMP)
-	$(UV_INSTALL) -e ".[workflow,notebooks,video]"
+	$(UV_INSTALL) -e ".[workflow,notebooks,video,cli]"
 	touch $(NOTEBOOKS_STAMP)
 
 $(STAMP): $(BUILD_STAMP)
-	$(UV_INSTALL) -e ".[workflow,test,dev,notebooks,video]"
+	$(UV_INSTALL) -e ".[workflow,test,dev,notebooks,video,cli]"
 	touch $(STAMP)
 
 $(DOCS_STAMP): $(BUILD_STAMP)
-	$(UV_INSTALL) -e ".[workflow,docs]"
+	$(UV_INSTALL) -e ".[workflow,docs,cli]"
 	touch $(DOCS_STAMP)
 
 test: $(STAMP)
@@ -124,14 +124,17 @@ cluster-test: $(STAMP)
 	$(UV_INSTALL) -e ".[slurm]"
 	$(BIN)/python tools/cluster_test.py
 
-# Re-resolve the newest versions into constraints.txt (needs the network).
-lock:
-	rm -rf .lockvenv && $(PYTHON) -m venv .lockvenv
-	.lockvenv/bin/pip install --quiet uv ".[workflow,test,dev,notebooks,docs,slurm,video,bench]"
+# Re-resolve the newest versions of the package, every extra, uv and the build's setuptools
+# and wheel into constraints.txt, for every platform (uv pip compile installs nothing;
+# needs the network). LOCK_FLAGS= keeps the versions already pinned where they still fit.
+LOCK_FLAGS ?= --upgrade
+lock: $(UV)
+	printf 'uv\nsetuptools\nwheel\n' | $(UV) pip compile pyproject.toml - --all-extras \
+		--universal --python-version 3.11 --no-header --no-annotate --quiet $(LOCK_FLAGS) \
+		--output-file constraints.txt
 	{ echo "# Exact versions of every package the project installs (pip and uv constraints)."; \
-	  echo "# Regenerate: make lock"; \
-	  .lockvenv/bin/pip freeze --all --exclude-editable | grep -v -e '^turntable' -e '^pip=='; } > constraints.txt
-	rm -rf .lockvenv
+	  echo "# Regenerate: make lock"; grep -v '^#' constraints.txt; } > constraints.txt.new
+	mv constraints.txt.new constraints.txt
 
 clean:
 	rm -rf figures results logs .snakemake paper/paper.pdf docs/_build

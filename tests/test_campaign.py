@@ -86,7 +86,7 @@ def test_a_synthetic_film_is_fitted_back_to_its_truth(tmp_path, model, value):
                 {"true_model": model, "true_value": str(value), "seed": "3"}, True)  # fmt: skip
     simulate(simulation(film, FILM_SECTION), film.path)
     assert "SYNTHETIC" in Path(film.path).read_text().splitlines()[0]
-    result = fit_film(film.fit_args())
+    result = fit_film(film.fit_options())
     row = summary_row({"name": film.name, "row": 2, "path": film.path, "labels": {}}, result)
     assert (row["status"], row["selected"], row["decisive"]) == ("fitted", model, True)
     assert abs(row["value"] - value) < 4 * row["stderr"]
@@ -94,7 +94,7 @@ def test_a_synthetic_film_is_fitted_back_to_its_truth(tmp_path, model, value):
 
 def test_a_film_that_turntable_fit_refuses_gives_its_one_line(tmp_path):
     (tmp_path / "bad.csv").write_text("t,x,y\n0,0,zero\n")
-    result = fit_film([str(tmp_path / "bad.csv"), "--radius", "0.005", "--rpm", "33"])
+    result = fit_film({"path": str(tmp_path / "bad.csv"), "radius": 0.005, "rpm": 33.0})
     assert list(result) == ["error"]
     assert "bad.csv" in result["error"]
     assert "\n" not in result["error"]

@@ -171,10 +171,10 @@ def test_rpm_and_omega_agree_and_python_m_runs_the_same(
 
 
 def test_negative_numbers_in_scientific_notation_are_values() -> None:
-    args = cli._parser().parse_args(
-        ["fit", "f.csv", "--radius", "1e-2", "--axis", "-1e-05", "-2E-7"]
-    )
+    args = cli.parse_args(["fit", "f.csv", "--radius", "1e-2", "--axis", "-1e-05", "-2E-7"])
     assert args.axis == [-1e-05, -2e-7]
+    with pytest.raises(SystemExit):
+        cli.parse_args(["fit", "f.csv", "--radius", "1e-2", "--axis", "-1e-05", "-x"])
 
 
 def test_plot(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:

@@ -116,6 +116,38 @@ def test_track_writes_the_film_and_its_calibration(rendered, tmp_path, capsys) -
     assert len(cal["frame_times_s"]) == truth.film.t.size
 
 
+def test_track_json(rendered, tmp_path, capsys) -> None:
+    """--json: one JSON object on stdout, the files written and the tracking; warnings are
+    still logged on stderr."""
+    path, truth, _, _ = rendered
+    out = tmp_path / "film.csv"
+    args = ["--ball-radius", "0.008", "--platter-radius", "0.15", "-o", str(out), "--json"]
+    res = run_here(capsys, "track", str(path), *args)
+    assert res.returncode == 0, res.stderr
+    shown = json.loads(res.stdout)
+    assert (shown["film"], shown["calibration"]) == (str(out), str(out.with_suffix(".json")))
+    assert shown["frames"] == truth.film.t.size
+    assert shown["lost_frames"] == [20, 21, 22]
+    assert abs(shown["omega_rad_s"] - truth.omega) < 4 * shown["omega_stderr_rad_s"]
+    assert any("20-22" in w for w in shown["warnings"])
+    assert "turntable track: warning: " in res.stderr
+    assert run_here(capsys, "track", str(path), *args, "-q").stderr == ""
+
+
+def test_rendering_and_tracking_report_their_progress(rendered, tmp_path) -> None:
+    path, truth, _, _ = rendered
+    calls = []
+    track_video(path, RADIUS, PLATTER, progress=lambda *a: calls.append(a))
+    n = truth.film.t.size
+    assert calls == [("tracking", i, n) for i in range(1, n + 1)]
+    calls.clear()
+    scene = Scene(size=(320, 180), fps=30.0, duration=0.5)
+    small = render_video(tmp_path / "b_SYNTHETIC.mp4", "slipping", 2.0, STATE0, SETUP, scene,
+                         progress=lambda *a: calls.append(a))  # fmt: skip
+    n = small.film.t.size
+    assert calls == [("rendering", i, n) for i in range(1, n + 1)]
+
+
 def test_fit_video_takes_omega_from_it(rendered, capsys) -> None:
     path, truth, _, _ = rendered
     res = run_here(capsys, "fit", str(path), "--radius", "0.008", "--platter-radius", "0.15")

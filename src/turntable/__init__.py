@@ -8,7 +8,7 @@ States are :math:`z = (x, y, v_x, v_y, \omega_x, \omega_y)`, dimensionless (leng
 :math:`R`, time :math:`1/\Omega`, mass :math:`m`).
 """
 
-from importlib.metadata import version as _version
+from importlib.metadata import PackageNotFoundError, version
 
 from turntable.limits import (
     LimitErrorFit,
@@ -43,8 +43,10 @@ from turntable.spectrum import (
     system_matrix,
 )
 
-# The version of the installed distribution (``version`` of ``pyproject.toml``).
-__version__ = _version("turntable")
+try:
+    __version__ = version("turntable")
+except PackageNotFoundError:  # a source tree on sys.path, not installed
+    __version__ = "0+unknown"
 
 __all__ = [
     "GOLDEN",

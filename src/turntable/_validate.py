@@ -125,3 +125,7 @@ def times_within(name: str, t: NDArray[np.float64], t_max: float, why: str) -> N
             f"{name} must be at most {t_max:.17g}, the largest time this solution can "
             f"represent ({why}); got max({name}) = {float(np.max(t)):.17g}"
         )
+
+
+class InputError(ValueError):
+    """Input that a command refuses before doing any work; the message is one line."""

@@ -9,7 +9,7 @@ row is reported with its number and what is wrong, and the other films are fitte
 same.
 
 ``python -m turntable.campaign fit ARGS_JSON OUT.json`` fits a batch of films (``{name:
-Film.fit_args()}``) in one process and writes ``{name: the result of turntable fit, or the
+Film.fit_options()}``) in one process and writes ``{name: the result of turntable fit, or the
 one line that refused the film}``;
 ``python -m turntable.campaign simulate SPEC_JSON OUT [TRUTH.csv]`` writes a synthetic film
 or video.
@@ -17,7 +17,6 @@ or video.
 
 from __future__ import annotations
 
-import contextlib
 import csv
 import io
 import json
@@ -27,6 +26,8 @@ import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
+
+from turntable._progress import Progress
 
 COLUMNS = ("file", "radius_m", "k", "rpm", "platter_radius_m")
 COEFFICIENT = {"slipping": "mu0", "rolling_resistance": "delta"}
@@ -54,14 +55,15 @@ class Film:
     labels: dict[str, str] = field(default_factory=dict)
     synthetic: bool = False
 
-    def fit_args(self) -> list[str]:
-        """The arguments of ``turntable fit`` for this film."""
-        args = [self.path, "--radius", repr(self.radius_m), "--k", repr(self.k)]
-        if self.rpm is not None:
-            args += ["--rpm", repr(self.rpm)]
-        if self.platter_radius_m is not None:
-            args += ["--platter-radius", repr(self.platter_radius_m)]
-        return args
+    def fit_options(self) -> dict[str, Any]:
+        """The arguments of `turntable.fitting.fit_file` for this film (JSON)."""
+        return {
+            "path": self.path,
+            "radius": self.radius_m,
+            "k": self.k,
+            "rpm": self.rpm,
+            "platter_radius": self.platter_radius_m,
+        }
 
 
 def _number(text: str, name: str, optional: bool = False) -> float | None:
@@ -142,21 +144,15 @@ def read_table(
     return films, bad
 
 
-def fit_film(args: list[str]) -> dict[str, Any]:
-    """``turntable fit ARGS`` (`Film.fit_args`): its result, or ``{"error": the line that
-    refused the film}``."""
-    from turntable import cli
+def fit_film(options: dict[str, Any]) -> dict[str, Any]:
+    """The result of ``turntable fit`` (`turntable.fitting.fit_file`) for the film of
+    `Film.fit_options`, or ``{"error": the line that refused the film}``."""
+    from turntable.fitting import InputError, fit_file
 
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        try:
-            status = cli.main(["fit", *args])
-        except SystemExit as exc:  # argparse
-            status = exc.code
-    lines = err.getvalue().strip().splitlines()
-    if status != 0:
-        return {"error": lines[-1] if lines else f"turntable fit exited with status {status}"}
-    return json.loads(out.getvalue())
+    try:
+        return fit_file(**options)
+    except InputError as exc:
+        return {"error": f"turntable fit: error: {exc}"}
 
 
 def batches(names: list[str], size: int) -> dict[str, list[str]]:
@@ -232,11 +228,14 @@ def simulation(
 
 
 def simulate(
-    spec: dict[str, Any], path: str | os.PathLike[str], truth: str | os.PathLike[str] = ""
+    spec: dict[str, Any],
+    path: str | os.PathLike[str],
+    truth: str | os.PathLike[str] = "",
+    progress: Progress | None = None,
 ) -> None:
     """Write the SYNTHETIC film of `spec` (`simulation`) to `path`: a tracked film (CSV),
-    or a video (`turntable.video.render`) when `spec` has a scene, with the true positions
-    of its frames at `truth` if given."""
+    or a video (`turntable.video.render`, which calls `progress`) when `spec` has a scene,
+    with the true positions of its frames at `truth` if given."""
     from turntable import film, fit, solution
 
     rig = film.rig_from_config(spec["film"])
@@ -252,7 +251,9 @@ def simulate(
 
     scene = Scene(**(spec["scene"] | {"size": tuple(spec["scene"]["size"])}))
     setup = rig.setup._replace(axis=(0.0, 0.0))
-    rendered = render_video(path, spec["model"], spec["value"], z0, setup, scene, spec["seed"])
+    rendered = render_video(
+        path, spec["model"], spec["value"], z0, setup, scene, spec["seed"], progress=progress
+    )
     if truth:
         head = "SYNTHETIC DATA: the true positions of the ball of the rendered video"
         truth_of = f"truth: model = {spec['model']}, coefficient = {spec['value']!r}"
@@ -268,9 +269,12 @@ def _write_json(record: dict[str, Any], out: str) -> None:
 def main(argv: list[str] | None = None) -> int:
     command, spec, *out = sys.argv[1:] if argv is None else argv
     if command == "simulate":
-        simulate(json.loads(spec), *out)
+        from turntable._terminal import bars
+
+        with bars() as progress:
+            simulate(json.loads(spec), *out, progress=progress)
     else:
-        _write_json({name: fit_film(args) for name, args in json.loads(spec).items()}, *out)
+        _write_json({name: fit_film(options) for name, options in json.loads(spec).items()}, *out)
     return 0
 
 

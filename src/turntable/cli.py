@@ -8,40 +8,50 @@ stderr and exit status 2.
 
 ``turntable fit DATA.csv --radius R (--omega W | --rpm N) [--k K] [--axis X Y] [--mass M]
 [--fit-omega] [--fit-axis] [--plot FIG.png]`` fits the slipping and the rolling-resistance
-models to a tracked trajectory (`turntable.fit.fit_film`) and prints one JSON object on
-stdout (`turntable.fit.result_json`).
+models to a tracked trajectory or a video (`turntable.fitting.fit_file`) and prints one
+JSON object on stdout (`turntable.fit.result_json`).
 
 Bad input (a file that cannot be read or parsed, see `turntable.film.read_film`; a
 negative, zero or non-finite number; a value too large for the fit; too few frames) gets a
 one-line message on stderr and exit status 2, before any fitting is done.  A completed fit
-exits with status 0 and prints, after the JSON, one line on stderr per problem of the fit
+exits with status 0 and logs, after the JSON, one warning per problem of the fit
 (`turntable.fit.problems`: a coefficient at a bound, a selection that is not decisive,
 residuals that are not white noise, frames too far apart), each starting with
 ``turntable fit: warning:``.  With ``--plot``, the JSON is written before the figure; a
 figure that cannot be drawn gets one line on stderr and exit status 1.  A closed stdout
 (``turntable fit ... | head``) ends the command quietly.  ``python -m turntable`` runs the
 same.
+
+``-q`` shows errors only, ``-v`` (``-vv``) also the package's log lines of level INFO
+(DEBUG); on a terminal, tracking and fitting a video show a progress bar on stderr.
+``--json`` prints the results of ``track`` and ``claims`` as one JSON object.  ``turntable
+--print-completion bash`` (or zsh, tcsh) prints a shell completion script (shtab).
 """
 
 from __future__ import annotations
 
 import argparse
 import json
-import math
+import logging
 import os
 import re
 import sys
 import warnings
 from collections.abc import Sequence
+from importlib.metadata import version
 from pathlib import Path
 from typing import Any, NoReturn
 
 import numpy as np
 
-from turntable import film as film_io
-from turntable import fit, tracker
-from turntable._json import finite_or_none
+from turntable import tracker
 from turntable._plot_check import check_plot
+from turntable._progress import Progress
+from turntable._terminal import bars, logged
+from turntable._validate import InputError
+from turntable.fitting import fitted_film
+
+log = logging.getLogger(__name__)
 
 #: The claims report ``turntable claims`` reads unless told another (written by ``make``).
 DEFAULT_CLAIMS_REPORT = "results/claims.json"
@@ -49,9 +59,10 @@ DEFAULT_CLAIMS_REPORT = "results/claims.json"
 BAD_INPUT = 2
 #: Exit status when the fit was printed but the figure of ``--plot`` could not be drawn.
 PLOT_FAILED = 1
-#: Largest |value - axis| / radius (and |t| Omega) accepted: beyond it squares and sums of
-#: the residuals would come close to overflowing a double.
-MAX_DIMENSIONLESS = 1e100
+#: The shells whose completion ``--print-completion`` prints (shtab's).
+SHELLS = ("bash", "zsh", "tcsh")
+#: A negative number as a value (``--axis -1e-05 0``), not an option.
+_NEGATIVE_NUMBER = re.compile(r"-\.?\d")
 
 _DESCRIPTION = """\
 Fit both friction models to a filmed ball and select one.
@@ -74,11 +85,6 @@ get one line each on stderr; the exit status is still 0."""
 class _Parser(argparse.ArgumentParser):
     """An ArgumentParser whose errors are one line on stderr and exit status 2."""
 
-    def __init__(self, *args: Any, **kwargs: Any) -> None:
-        super().__init__(*args, **kwargs)
-        # a value such as -1e-05 is a number, not an option (argparse does so from Python 3.13)
-        self._negative_number_matcher = re.compile(r"-\.?\d")
-
     def error(self, message: str) -> NoReturn:
         _fail(f"{self.prog}: error: {message}")
 
@@ -88,14 +94,37 @@ def _fail(message: str) -> NoReturn:
     raise SystemExit(BAD_INPUT)
 
 
+def _common(suppress: bool) -> argparse.ArgumentParser:
+    """-q and -v, on the command and on each subcommand (the subcommand's win)."""
+    default = {"default": argparse.SUPPRESS} if suppress else {}
+    common = argparse.ArgumentParser(add_help=False)
+    loud = common.add_mutually_exclusive_group()
+    loud.add_argument(
+        "-q", "--quiet", action="store_true", help="errors only: no warning, no progress bar",
+        **default,
+    )  # fmt: skip
+    loud.add_argument(
+        "-v", "--verbose", action="count", help="more log lines (-vv: debugging)",
+        **(default or {"default": 0}),
+    )  # fmt: skip
+    return common
+
+
 def _parser() -> argparse.ArgumentParser:
-    parser = _Parser(prog="turntable", description="The ball on a turntable.")
-    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    parser = _Parser(
+        prog="turntable", description="The ball on a turntable.", parents=[_common(False)]
+    )
+    parser.add_argument("--version", action="version", version=f"%(prog)s {version('turntable')}")
+    parser.add_argument(
+        "--print-completion", choices=SHELLS, help="print a shell completion script and exit"
+    )
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
     p = sub.add_parser(
         "fit",
         help="fit the friction models to a tracked trajectory",
         description=_DESCRIPTION,
         formatter_class=argparse.RawDescriptionHelpFormatter,
+        parents=[_common(True)],
     )
     p.add_argument("data", metavar="DATA.csv", help="tracked positions (t, x, y) in s and m")
     p.add_argument("--radius", type=float, required=True, metavar="R", help="ball radius, m")
@@ -142,10 +171,11 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument(
         "--plot", metavar="FIG.png", help="draw data, both fits and the residuals (matplotlib)"
     )
+    p.add_argument("--json", action="store_true", help="print JSON (as fit always does)")
     _add_claims_parser(sub)
     from turntable.video.cli import add_parser
 
-    add_parser(sub)
+    add_parser(sub, [_common(True)])
     return parser
 
 
@@ -158,6 +188,12 @@ def _add_claims_parser(sub: Any) -> None:
             "reproduced value that decides the verdict, with its bound (the claim's "
             "'decisive' key in the registry)."
         ),
+        parents=[_common(True)],
+    )
+    p.add_argument(
+        "--json",
+        action="store_true",
+        help="print one JSON object: the summary and, per claim, its verdict and deciding value",
     )
     p.add_argument(
         "report",
@@ -168,47 +204,57 @@ def _add_claims_parser(sub: Any) -> None:
     )
 
 
-def claims_command(args: argparse.Namespace) -> int:
-    """Run ``turntable claims``: read the report and print one line per claim."""
-    from turntable.claims.report import decisive_lines
+def _claims_json(report: dict[str, Any]) -> dict[str, Any]:
+    """The summary of a claims report and, per claim, its verdict and deciding value."""
+    claims = []
+    for cid in report["order"]:
+        claim = report["claims"][cid]
+        key = claim["decisive"]
+        claims.append(
+            {
+                "id": cid,
+                "verdict": claim["verdict"],
+                "decisive": key,
+                "reproduced": claim["reproduced"][key],
+                "bound": claim["tolerance"].get(key),
+                "expected": claim["expected"],
+            }
+        )
+    return {"summary": report["summary"], "claims": claims}
 
+
+def claims_command(args: argparse.Namespace) -> int:
+    """Run ``turntable claims``: read the report and print one line per claim (or JSON)."""
+    try:
+        from turntable.claims.report import decisive_lines
+    except ImportError as exc:
+        raise InputError(
+            f"the claims need the extra [claims] ({exc.name} is missing): "
+            "pip install 'turntable[claims]'"
+        ) from None
     try:
         report = json.loads(Path(args.report).read_text(encoding="utf-8"))
-        lines = decisive_lines(report)
+        if args.json:
+            text = json.dumps(_claims_json(report), indent=2, allow_nan=False)
+        else:
+            text = "\n".join(decisive_lines(report))
     except OSError as exc:
-        _fail(
-            f"turntable claims: error: cannot read {args.report}: {exc.strerror or exc} "
-            "(make writes results/claims.json)"
-        )
+        raise InputError(
+            f"cannot read {args.report}: {exc.strerror or exc} (make writes results/claims.json)"
+        ) from None
     except (ValueError, KeyError, TypeError) as exc:
-        _fail(
-            f"turntable claims: error: {args.report} is not a claims report with a "
-            f"decisive value per claim ({type(exc).__name__}: {exc})"
-        )
-    try:
-        sys.stdout.write("\n".join(lines) + "\n")
-        sys.stdout.flush()
-    except BrokenPipeError:
-        devnull = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(devnull, sys.stdout.fileno())
-        raise SystemExit(1) from None
+        raise InputError(
+            f"{args.report} is not a claims report with a decisive value per claim "
+            f"({type(exc).__name__}: {exc})"
+        ) from None
+    _write(text)
     return 0
 
 
-def _positive(option: str, value: float | None, unit: str) -> None:
-    if value is not None and not (math.isfinite(value) and value > 0):
-        _fail(f"turntable fit: error: {option} must be a finite number > 0 ({unit}); got {value}")
-
-
-def _warn(message: str) -> None:
-    print(f"turntable fit: warning: {' '.join(message.split())}", file=sys.stderr)
-
-
-def _write_json(out: dict[str, Any]) -> None:
-    """Print the JSON object; a closed stdout (``| head``) ends the command quietly."""
+def _write(text: str) -> None:
+    """Print ``text``; a closed stdout (``| head``) ends the command quietly."""
     try:
-        json.dump(out, sys.stdout, indent=2, allow_nan=False)
-        sys.stdout.write("\n")
+        sys.stdout.write(text + "\n")
         sys.stdout.flush()
     except BrokenPipeError:
         # Python flushes stdout again at exit: point it at /dev/null so that this does not
@@ -218,123 +264,31 @@ def _write_json(out: dict[str, Any]) -> None:
         raise SystemExit(1) from None
 
 
-def _bounds(setup: film_io.Setup) -> dict[str, tuple[float, float]]:
-    """Values the fit can take: |x - axis| / R and |t| Omega up to `MAX_DIMENSIONLESS`."""
-    span = MAX_DIMENSIONLESS * setup.radius
-    ax, ay = setup.axis
-    time = MAX_DIMENSIONLESS / setup.omega
-    return {
-        "t": (-time, time),
-        "x": (ax - span, ax + span),
-        "y": (ay - span, ay + span),
-    }
-
-
-def _read(path: str, setup: film_io.Setup, p: int, args: argparse.Namespace) -> film_io.Film:
-    """The film of a CSV file or a Tracker export, or one line and exit status 2."""
-    if tracker.is_tracker(path):
-        try:
-            data, label = tracker.read_tracker(path, args.track, tracker.UNITS[args.units])
-        except film_io.FilmError as exc:
-            _fail(f"turntable fit: error: {exc}")
-        if data.t.size < p // 2 + 1:
-            _fail(
-                f"turntable fit: error: {path}: track {label!r} has {data.t.size} frames with "
-                f"t, x and y; at least {p // 2 + 1} are needed"
-            )
-        _warn(
-            f"{path}: Tracker's track {label!r}, its positions read in {args.units} (the units "
-            "calibrated in Tracker, which the file does not say: --units), its times in s"
-        )
-        return data
-    try:
-        return film_io.read_film(
-            path,
-            min_rows=p // 2 + 1,
-            why=f"2 coordinates each, more than the {p} parameters of the slipping model",
-            bounds=_bounds(setup),
-            bounds_why=(
-                f"too large for the fit: |x - axis| and |y - axis| must stay below "
-                f"{MAX_DIMENSIONLESS:g} radii, |t| below {MAX_DIMENSIONLESS:g} / Omega; "
-                "check the units (m, s)"
-            ),
-        )
-    except film_io.FilmError as exc:
-        _fail(f"turntable fit: error: {exc}")
-
-
-def fit_command(args: argparse.Namespace) -> int:
-    """Run ``turntable fit``: check everything, fit, print the JSON and the warnings, draw."""
-    _positive("--radius", args.radius, "m")
-    _positive("--omega", args.omega, "rad/s")
-    _positive("--rpm", args.rpm, "revolutions per minute")
-    _positive("--k", args.k, "dimensionless")
-    _positive("--mass", args.mass, "kg")
-    axis = (0.0, 0.0) if args.axis is None else (args.axis[0], args.axis[1])
-    if not all(math.isfinite(a) for a in axis):
-        _fail(f"turntable fit: error: --axis must be two finite numbers (m); got {args.axis}")
+def fit_command(args: argparse.Namespace, progress: Progress | None = None) -> int:
+    """Run ``turntable fit``: fit (`turntable.fitting.fit_file`), print the JSON, log the
+    problems of the fit, draw."""
     if args.plot is not None:
         check_plot(args.plot, "turntable fit")
-    from turntable.video.cli import VIDEO_SUFFIXES
-
-    video = args.platter_radius is not None or Path(args.data).suffix.lower() in VIDEO_SUFFIXES
-    if video and args.platter_radius is None:
-        _fail(f"turntable fit: error: {args.data} is a video: give --platter-radius P (m)")
-    if not video and args.omega is None and args.rpm is None:
-        _fail("turntable fit: error: one of the arguments --omega --rpm is required")
-    # a video's image of the ball's centre is off by a few thousandths of R in a fixed
-    # direction, more than a rolling fit's precision: the rolling model's axis is fitted
-    options = {"fit_omega": args.fit_omega, "fit_axis": args.fit_axis or video}
-    p = max(fit.n_parameters(m, **options) for m in fit.MODELS)
-    tracked = None
-    if video:
-        _positive("--platter-radius", args.platter_radius, "m")
-        from turntable.video.cli import run_tracking
-
-        tracked, notes = run_tracking(
-            args.data,
-            args.radius,
-            args.platter_radius,
-            args.rpm,
-            "turntable fit",
-            {"ball_at": args.ball_at, "mark_at": args.mark_at},
-        )
-        for message in notes:
-            _warn(message)
-    if args.omega is not None:
-        omega = args.omega
-    elif args.rpm is not None:
-        omega = film_io.rpm_to_omega(args.rpm)
-    else:
-        omega = abs(tracked.calibration.omega)
-    setup = film_io.Setup(args.radius, omega, args.k, axis)
-    if tracked is not None:
-        data = tracked.film
-        if data.t.size < p // 2 + 1:
-            _fail(
-                f"turntable fit: error: {args.data}: the ball was found on {data.t.size} frames; "
-                f"at least {p // 2 + 1} are needed"
-            )
-    else:
-        data = _read(args.data, setup, p, args)
-    # Extreme but accepted numbers may overflow inside the fit; what that does to the result
-    # is reported (None in the JSON, a warning), not numpy's RuntimeWarning lines.
-    with warnings.catch_warnings(), np.errstate(all="ignore"):
-        warnings.simplefilter("ignore", RuntimeWarning)
-        result = fit.fit_film(data, setup, **options)
-        check = fit.consistency(data, setup, result, **options)
-        out = finite_or_none(
-            fit.result_json(result, setup, data, args.mass, source=args.data, check=check)
-        )
-    if tracked is not None:
-        from turntable.video.track import video_summary
-
-        out["video"] = finite_or_none(
-            video_summary(tracked, given_omega=omega != abs(tracked.calibration.omega))
-        )
-    _write_json(out)
+    out, data = fitted_film(
+        args.data,
+        args.radius,
+        omega=args.omega,
+        rpm=args.rpm,
+        k=args.k,
+        axis=args.axis,
+        mass=args.mass,
+        fit_omega=args.fit_omega,
+        fit_axis=args.fit_axis,
+        platter_radius=args.platter_radius,
+        ball_at=args.ball_at,
+        mark_at=args.mark_at,
+        units=args.units,
+        track=args.track,
+        progress=progress,
+    )
+    _write(json.dumps(out, indent=2, allow_nan=False))
     for message in out["warnings"]:
-        _warn(message)
+        log.warning(message)
     if args.plot is not None:
         from turntable.fit import plot as fitplot
 
@@ -349,18 +303,42 @@ def fit_command(args: argparse.Namespace) -> int:
     return 0
 
 
+def parse_args(argv: Sequence[str]) -> argparse.Namespace:
+    """The arguments of the command line ``argv``; a negative number such as ``-1e-05`` is a
+    value, not an option."""
+    return _parser().parse_args([f" {a}" if _NEGATIVE_NUMBER.match(a) else a for a in argv])
+
+
+def _completion(shell: str) -> str:
+    try:
+        import shtab
+    except ImportError:
+        _fail("turntable: error: --print-completion needs shtab (pip install 'turntable[cli]')")
+    return shtab.complete(_parser(), shell)
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the ``turntable`` console script; returns the exit status."""
-    args = _parser().parse_args(sys.argv[1:] if argv is None else list(argv))
-    if args.command == "fit":
-        return fit_command(args)
-    if args.command == "claims":
-        return claims_command(args)
-    if args.command == "track":
-        from turntable.video.cli import track_command
+    args = parse_args(sys.argv[1:] if argv is None else list(argv))
+    if args.print_completion:
+        _write(_completion(args.print_completion).rstrip("\n"))
+        return 0
+    if args.command is None:
+        _parser().error("the following arguments are required: COMMAND")
+    prog = f"turntable {args.command}"
+    with logged(prog, args.quiet, args.verbose), bars(args.quiet) as progress:
+        try:
+            if args.command == "fit":
+                return fit_command(args, progress)
+            if args.command == "claims":
+                return claims_command(args)
+            from turntable.video.cli import track_command
 
-        return track_command(args)
-    raise AssertionError(args.command)  # argparse allows only the commands above
+            return track_command(args, progress)
+        except InputError as exc:
+            if progress is not None:
+                progress.close()
+            _fail(f"{prog}: error: {exc}")
 
 
 if __name__ == "__main__":

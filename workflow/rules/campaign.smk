@@ -66,7 +66,7 @@ rule campaign_fit:
         "../envs/turntable.yaml"
     params:
         args=lambda w: json.dumps(
-            {f: CAMPAIGN_FILMS[f].fit_args() for f in CAMPAIGN_BATCHES[w.batch]}
+            {f: CAMPAIGN_FILMS[f].fit_options() for f in CAMPAIGN_BATCHES[w.batch]}
         ),
     shell:
         "python -m turntable.campaign fit {params.args:q} {output:q} 2> {log:q}"

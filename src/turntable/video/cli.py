@@ -5,21 +5,28 @@ Tracks the ball of a video (`turntable.video.track.track_video`) and writes FILM
 y in s and m, the lab frame, the axis at the origin; comment lines say how it was made)
 and FILM.json beside it (the calibration with its standard errors, the frame times, the
 lost frames, the checks).  Both are written only when everything has succeeded, each under a
-temporary name then renamed.  Bad input, and a track that fails a check, get one line on
-stderr and exit status 2 (with ``--plot``, the first frame with what was found is drawn);
-warnings (lost frames, a given --rpm the video contradicts) one line each.
+temporary name then renamed.  Bad input, and a track that fails a check, raise
+`turntable._validate.InputError`: one line on stderr and exit status 2 (with ``--plot``, the
+first frame with what was found is drawn); warnings (lost frames, a given --rpm the video
+contradicts) are logged, one line each.  With ``--json`` the summary is one JSON object.
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import logging
 import math
 import os
 import sys
 import tempfile
 from pathlib import Path
 from typing import Any
+
+from turntable._progress import Progress
+from turntable._validate import InputError
+
+log = logging.getLogger(__name__)
 
 #: Suffixes that `turntable fit` takes for a video rather than a film.
 VIDEO_SUFFIXES = (".mp4", ".mov", ".m4v", ".mkv", ".avi", ".webm", ".mts", ".3gp")
@@ -37,13 +44,15 @@ axis, each with its standard error; the frame times; the frames where the ball w
 which are gaps of the film)."""
 
 
-def add_parser(sub: Any) -> None:
-    """Add the ``track`` command to the subparsers of ``turntable``."""
+def add_parser(sub: Any, parents: list[argparse.ArgumentParser]) -> None:
+    """Add the ``track`` command to the subparsers of ``turntable``, with the options of
+    ``parents``."""
     p = sub.add_parser(
         "track",
         help="track the ball of a video: the film that turntable fit reads",
         description=_DESCRIPTION,
         formatter_class=argparse.RawDescriptionHelpFormatter,
+        parents=parents,
     )
     p.add_argument("video", metavar="VIDEO", help="the video (any format FFmpeg reads)")
     add_video_options(p, "--ball-radius")
@@ -58,6 +67,11 @@ def add_parser(sub: Any) -> None:
         metavar="FIG.png",
         help="draw the first frame with the rim, axis, mark, track (or, on an error, with what "
         "was found)",
+    )
+    p.add_argument(
+        "--json",
+        action="store_true",
+        help="print one JSON object (the files written, the tracking, the warnings)",
     )
 
 
@@ -86,27 +100,20 @@ def add_video_options(p: argparse.ArgumentParser, radius: str | None) -> None:
     )
 
 
-def fail(message: str) -> None:
-    print(message, file=sys.stderr)
-    raise SystemExit(2)
-
-
-def check_number(option: str, value: float | None) -> None:
-    if value is not None and not (math.isfinite(value) and value > 0):
-        fail(f"turntable track: error: {option} must be a finite number > 0; got {value}")
-
-
-def run_tracking(
+def track(
     video: str,
     ball_radius: float,
     platter_radius: float,
     rpm: float | None,
-    prog: str,
     seeds: dict[str, Any] | None = None,
     plot: str | None = None,
+    progress: Progress | None = None,
 ):
-    """Track, or fail with one line (exit status 2; with ``plot``, what was found is drawn
-    first); return (track, warnings).  ``seeds``: ball_at, mark_at."""
+    """Track (`turntable.video.track.track_video`); return (track, warnings).
+
+    ``seeds``: ball_at, mark_at.  A video that cannot be tracked raises `InputError` (with
+    ``plot``, what was found is drawn first).
+    """
     try:
         import av  # noqa: F401
         import cv2  # noqa: F401
@@ -114,20 +121,22 @@ def run_tracking(
         from turntable.video.decode import VideoError
         from turntable.video.track import track_video
     except ImportError as exc:
-        fail(
-            f"{prog}: error: reading a video needs the extra [video] ({exc.name} is missing): "
+        raise InputError(
+            f"reading a video needs the extra [video] ({exc.name} is missing): "
             "pip install 'turntable[video]'"
-        )
+        ) from None
     if platter_radius <= ball_radius:
-        fail(f"{prog}: error: --platter-radius {platter_radius:g} m must exceed the ball's radius")
+        raise InputError(f"--platter-radius {platter_radius:g} m must exceed the ball's radius")
     try:
-        return track_video(video, ball_radius, platter_radius, rpm, **(seeds or {}))
+        return track_video(
+            video, ball_radius, platter_radius, rpm, **(seeds or {}), progress=progress
+        )
     except VideoError as exc:
         if plot is not None and exc.found is not None:
             from turntable.video.plot import plot_found
 
             plot_found(plot, exc.found, video)
-        fail(f"{prog}: error: {' '.join(str(exc).split())}")
+        raise InputError(" ".join(str(exc).split())) from None
 
 
 def header(track: Any, json_name: str) -> list[str]:
@@ -170,50 +179,60 @@ def write_outputs(csv_path: Path, track: Any, cal_json: dict[str, Any]) -> None:
         raise
 
 
-def track_command(args: argparse.Namespace) -> int:
-    """Run ``turntable track``."""
+def _check_number(option: str, value: float | None) -> None:
+    if value is not None and not (math.isfinite(value) and value > 0):
+        raise InputError(f"{option} must be a finite number > 0; got {value}")
+
+
+def track_command(args: argparse.Namespace, progress: Progress | None = None) -> int:
+    """Run ``turntable track``; bad input raises `InputError`."""
     from turntable._plot_check import check_plot
 
-    prog = "turntable track"
     if args.platter_radius is None:
-        fail(f"{prog}: error: the following arguments are required: --platter-radius")
-    check_number("--ball-radius", args.ball_radius)
-    check_number("--platter-radius", args.platter_radius)
-    check_number("--rpm", args.rpm)
+        raise InputError("the following arguments are required: --platter-radius")
+    _check_number("--ball-radius", args.ball_radius)
+    _check_number("--platter-radius", args.platter_radius)
+    _check_number("--rpm", args.rpm)
     out = Path(args.output or Path(args.video).with_suffix(".csv"))
     if out.suffix.lower() == ".json":
-        fail(f"{prog}: error: -o {out}: the film is a .csv; its calibration goes beside it (.json)")
+        raise InputError(f"-o {out}: the film is a .csv; its calibration goes beside it (.json)")
     folder = out.resolve().parent
     if not folder.is_dir() or not os.access(folder, os.W_OK):
-        fail(f"{prog}: error: -o {out}: cannot write into the folder {folder}")
+        raise InputError(f"-o {out}: cannot write into the folder {folder}")
     if args.plot is not None:
-        check_plot(args.plot, prog)
-    track, warnings = run_tracking(
+        check_plot(args.plot, "turntable track")
+    tracked, notes = track(
         args.video,
         args.ball_radius,
         args.platter_radius,
         args.rpm,
-        prog,
         {"ball_at": args.ball_at, "mark_at": args.mark_at},
         args.plot,
+        progress,
     )
-    from turntable.video.track import calibration_json
+    from turntable.video.track import calibration_json, video_summary
 
-    write_outputs(out, track, calibration_json(track, args.ball_radius, args.platter_radius))
-    for w in warnings:
-        print(f"{prog}: warning: {w}", file=sys.stderr)
-    cal = track.calibration
-    print(
-        f"{out}: {track.film.t.size} frames of the ball ({len(track.lost)} lost); Omega = "
-        f"{abs(cal.omega):.6g} +- {cal.omega_stderr:.2g} rad/s; tilt "
-        f"{cal.derived['tilt_deg']:.2f} deg; calibration in {out.with_suffix('.json')}"
-    )
+    write_outputs(out, tracked, calibration_json(tracked, args.ball_radius, args.platter_radius))
+    for note in notes:
+        log.warning(note)
+    cal = tracked.calibration
+    if args.json:
+        summary = video_summary(tracked, given_omega=False)
+        del summary["omega_used"], summary["axis"]
+        summary |= {"film": str(out), "calibration": str(out.with_suffix(".json"))}
+        print(json.dumps(summary | {"warnings": notes}, indent=2, allow_nan=False))
+    else:
+        print(
+            f"{out}: {tracked.film.t.size} frames of the ball ({len(tracked.lost)} lost); "
+            f"Omega = {abs(cal.omega):.6g} +- {cal.omega_stderr:.2g} rad/s; tilt "
+            f"{cal.derived['tilt_deg']:.2f} deg; calibration in {out.with_suffix('.json')}"
+        )
     if args.plot is not None:
         try:
             from turntable.video.plot import plot_track
 
-            plot_track(args.plot, track)
+            plot_track(args.plot, tracked)
         except Exception as exc:
-            print(f"{prog}: error: --plot {args.plot}: {exc}", file=sys.stderr)
+            print(f"turntable track: error: --plot {args.plot}: {exc}", file=sys.stderr)
             return 1
     return 0

@@ -23,6 +23,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from turntable._progress import Progress, counted
 from turntable.film import Film, Setup
 from turntable.fit.models import positions
 from turntable.video import _scene, camera
@@ -387,6 +388,7 @@ def render_video(
     scene: Scene | None = None,
     seed: int = 0,
     pose: Pose | None = None,
+    progress: Progress | None = None,
 ) -> Rendered:
     """Render a SYNTHETIC video of the ball of one friction model and write it as H.264.
 
@@ -403,6 +405,8 @@ def render_video(
         Seed of the texture and the noise.
     pose : Pose, optional
         The camera; by default ``default_pose``.
+    progress : callable, optional
+        Called as ``progress("rendering", frames written, frames of the video)``.
 
     Returns
     -------
@@ -490,6 +494,7 @@ def render_video(
                             None if velocity is None else velocity[i], delay[i]))
         for i, ti in enumerate(t)
     )  # fmt: skip
+    frames = counted(frames, progress, "rendering", n)
     write_video(path, frames, scene.fps, scene.size, scene.crf,
                 f"rendered by turntable.video.render from the exact solution of the {model} "
                 f"model ({coefficient!r})")  # fmt: skip

@@ -20,6 +20,7 @@ from typing import Any, NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
+from turntable._progress import Progress, counted
 from turntable.film import Film
 from turntable.video import camera
 from turntable.video.calibrate import Calibration, calibrate, rim_camera
@@ -134,6 +135,7 @@ def track_video(
     rpm: float | None = None,
     ball_at: tuple[float, float] | None = None,
     mark_at: tuple[float, float] | None = None,
+    progress: Progress | None = None,
 ) -> tuple[Track, list[str]]:
     """Track the ball of a video; return the track and the warnings (one line each).
 
@@ -148,6 +150,9 @@ def track_video(
         differ by more than 4 standard errors and 0.1 %).
     ball_at, mark_at : tuple of float, optional
         Seeds: a pixel (u, v) of the first frame on the ball, and on the mark.
+    progress : callable, optional
+        Called as ``progress("tracking", frames read, frames of the video)`` for each frame
+        read (the total None when the container does not say).
 
     Returns
     -------
@@ -189,7 +194,8 @@ def track_video(
     """
     with Video(path) as video:
         try:
-            return _track(video, ball_radius, platter_radius, rpm, ball_at, mark_at)
+            frames = counted(video.frames(), progress, "tracking", video.info.frames or None)
+            return _track(video, frames, ball_radius, platter_radius, rpm, ball_at, mark_at)
         except VideoError as exc:
             message = str(exc)
             if not message.startswith(video.info.path):
@@ -197,9 +203,8 @@ def track_video(
             raise VideoError(message, exc.found) from None
 
 
-def _track(video, ball_radius, platter_radius, rpm, ball_at, mark_at):
+def _track(video, frames, ball_radius, platter_radius, rpm, ball_at, mark_at):
     info = video.info
-    frames = video.frames()
     first = next(frames, None)
     if first is None:
         raise VideoError("the video has no frame")

@@ -20,6 +20,7 @@ from types import SimpleNamespace
 import jinja2
 import yaml
 
+from turntable._atomic import write_text
 from turntable.claims.report import html_math, summary_line
 from turntable.config import validate
 from turntable.film import EXAMPLE_FILM
@@ -38,7 +39,7 @@ def _need(path: Path) -> Path:
 
 def _write(name: str, text: str) -> None:
     OUT.mkdir(parents=True, exist_ok=True)
-    (OUT / name).write_text(text, encoding="utf-8")
+    write_text(OUT / name, text)
 
 
 def example_fit() -> None:

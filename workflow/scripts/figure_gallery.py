@@ -7,10 +7,10 @@ workflow/scripts/report_figure.py, embedded, so the page is self-contained.
 """
 
 import logging
-import os
-from pathlib import Path
 
 from report_figure import figure_html
+
+from turntable._atomic import write_text
 
 logging.basicConfig(filename=snakemake.log[0], level=logging.INFO, filemode="w")
 
@@ -40,8 +40,6 @@ page = (
     + "\n".join(sections)
     + "\n</body></html>\n"
 )
-out = Path(snakemake.output[0])
-tmp = out.with_name(f".{out.name}.partial")
-tmp.write_text(page, encoding="utf-8")
-os.replace(tmp, out)
+out = snakemake.output[0]
+write_text(out, page)
 logging.info("wrote %s with the animation and %d figures", out, len(sections) - 1)

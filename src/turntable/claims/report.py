@@ -16,6 +16,7 @@ from typing import Any
 
 import turntable
 from turntable import reference
+from turntable._atomic import write_text
 from turntable.claims import VERDICTS, evaluate_all, resolve_params
 from turntable.claims._core import clean, split_bound
 
@@ -431,7 +432,6 @@ def write_reports(
     """Build the report and write it as JSON and as Markdown; return it."""
     report = build_report(params, commit=commit, provenance=provenance)
     for path, text in ((json_path, to_json(report)), (md_path, to_markdown(report))):
-        path = Path(path)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(text, encoding="utf-8")
+        Path(path).parent.mkdir(parents=True, exist_ok=True)
+        write_text(path, text)
     return report

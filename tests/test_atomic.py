@@ -21,9 +21,14 @@ def test_write_text_replaces_the_file_and_leaves_nothing_beside(tmp_path):
 def test_a_failed_write_keeps_the_old_file_and_removes_the_temporary_one(tmp_path):
     target = tmp_path / "figure.png"
     target.write_text("old")
-    with pytest.raises(RuntimeError), replacing(target) as tmp:
-        tmp.write_text("half")
-        raise RuntimeError("interrupted")
+
+    def interrupted() -> None:
+        with replacing(target) as tmp:
+            tmp.write_text("half")
+            raise RuntimeError("interrupted")
+
+    with pytest.raises(RuntimeError, match="interrupted"):
+        interrupted()
     assert target.read_text() == "old"
     assert [p.name for p in tmp_path.iterdir()] == ["figure.png"]
 

@@ -17,7 +17,18 @@ import turntable
 
 ROOT = Path(__file__).resolve().parents[1]
 RUNTIME = {"numpy", "scipy", "sympy", "mpmath", "pyyaml", "jsonschema"}
-WORKFLOW_TOOLS = ["matplotlib", "snakemake", "jupytext", "typst", "nbclient", "PIL", "av", "cv2"]
+WORKFLOW_TOOLS = [
+    "matplotlib",
+    "snakemake",
+    "jupytext",
+    "typst",
+    "nbclient",
+    "PIL",
+    "av",
+    "cv2",
+    "jinja2",
+    "markupsafe",
+]
 # Prelude of a child interpreter in which importing a workflow tool raises ImportError.
 BLOCK = f"""
 import sys

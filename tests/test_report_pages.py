@@ -187,3 +187,45 @@ def test_claims_page_gives_the_evidence_of_each_verdict() -> None:
         verdict = report["claims"][cid]["verdict"]
         assert item.startswith(f"<code>{cid}</code> ({verdict}; decided by <code>err = 0.5 ")
         assert f"why {cid} is {verdict}" in item
+
+
+SCRIPT = "<script>alert('x')</script>"
+
+
+def _report_with_script_everywhere() -> dict:
+    report = _fake_report()
+    for claim in report["claims"].values():
+        claim |= {
+            "where": {"label": SCRIPT},
+            "claim": SCRIPT,
+            "summary": SCRIPT,
+            "paper_value": {"text": SCRIPT},
+            "evidence": SCRIPT,
+            "method": SCRIPT,
+            "decisive": "err",
+            "reproduced": {"err": SCRIPT},
+            "tolerance": {"err": {"<=": 1.0}},
+            "expected": claim["verdict"],
+        }
+    report["version"] = report["git_commit"] = SCRIPT
+    return report
+
+
+def test_claims_page_shows_a_label_holding_a_script_as_text() -> None:
+    page = to_html(_report_with_script_everywhere())
+    assert "<script" not in page
+    assert "&lt;script&gt;alert(&#39;x&#39;)&lt;/script&gt;" in page
+    assert page.count("&lt;script&gt;") == 2 + 3 * 6  # version, commit; 6 places a claim
+
+
+def test_claims_markdown_shows_a_label_holding_a_script_as_text() -> None:
+    """In Markdown a "<" before a letter or "/" would open an HTML tag: it is escaped (in a
+    code span, such as the commit's, it is text anyway)."""
+    from turntable.claims.report import to_markdown
+
+    text = to_markdown(_report_with_script_everywhere())
+    rows = [line for line in text.splitlines() if line.startswith("| `")]
+    assert len(rows) == 3
+    assert all(r"\<script>alert('x')\</script>" in row for row in rows)
+    outside_code = re.sub(r"`[^`]*`", "", text)
+    assert re.search(r"(?<!\\)<[A-Za-z/]", outside_code) is None

@@ -229,3 +229,53 @@ def test_claims_markdown_shows_a_label_holding_a_script_as_text() -> None:
     assert all(r"\<script>alert('x')\</script>" in row for row in rows)
     outside_code = re.sub(r"`[^`]*`", "", text)
     assert re.search(r"(?<!\\)<[A-Za-z/]", outside_code) is None
+
+
+def _film_inputs(text: str) -> tuple[dict, dict, dict, dict]:
+    """What `film_page` reads, for one SYNTHETIC film whose name, note and warnings are
+    ``text``."""
+    measure = {
+        "setup": {
+            "radius_m": 0.01,
+            "omega_rad_s": 3.5,
+            "k": 0.4,
+            "fps": 240.0,
+            "noise_m": 2e-4,
+            "duration_s": 10.0,
+        },
+        "table": {"mu0": [0.1, 1.0], "mu0_stderr": [0.01, 0.5], "selection_probability": [1, 0.5]},
+        "reliable_mu0_range": [0.1, 1.0],
+        "indistinguishable_above_mu0": 0.8,
+        "reliable_relative_error": 0.2,
+        "selection_probability": 0.95,
+    }
+    truth = {"note": text, "films": {text: {"model": "slipping", "coefficient": 3.0}}}
+    entry = {
+        "mu0": 3.0,
+        "mu0_stderr": 0.003,
+        "mu0_ci95": [2.99, 3.01],
+        "rms_residual_m": 2e-4,
+        "residual_lag1_autocorrelation": -0.004,
+        "residual_lag1_white_sd": 0.014,
+    }
+    fit = {
+        "data": {"synthetic": True, "n_frames": 2401, "duration_s": 10.0, "turntable_turns": 5.6},
+        "slipping": entry,
+        "selected": "slipping",
+        "selection": {"aicc_difference": 5486.1, "akaike_weights": {"slipping": 1.0}},
+        "warnings": [text, text],
+    }
+    return measure, truth, {text: fit}, {"fig8_measurability": "<figure>8</figure>"}
+
+
+def test_film_page_shows_a_film_holding_a_script_as_text() -> None:
+    from turntable.fit._page import film_page
+
+    page = film_page(*_film_inputs(SCRIPT))
+    assert "<script" not in page
+    escaped = "&lt;script&gt;alert(&#39;x&#39;)&lt;/script&gt;"
+    assert page.count(escaped) == 4  # the note, the film's name, its two warnings
+    assert f"{escaped}; {escaped}</td>" in page
+    assert "<figure>8</figure><h2>Synthetic films" in page  # a figure's HTML as it is
+    assert "for every &mu;<sub>0</sub> of the grid up to 1; beyond" in page
+    assert "<td>&mu;<sub>0</sub> = 3.0000 ± 0.0030</td><td>2.9900 to 3.0100</td>" in page

@@ -279,3 +279,28 @@ def test_film_page_shows_a_film_holding_a_script_as_text() -> None:
     assert "<figure>8</figure><h2>Synthetic films" in page  # a figure's HTML as it is
     assert "for every &mu;<sub>0</sub> of the grid up to 1; beyond" in page
     assert "<td>&mu;<sub>0</sub> = 3.0000 ± 0.0030</td><td>2.9900 to 3.0100</td>" in page
+
+
+def test_a_figure_whose_name_and_image_hold_a_script_shows_them_as_text(tmp_path: Path) -> None:
+    """workflow/scripts/report_figure.py: the id, the alt text, the name and the image's
+    path are escaped; the caption is docutils' HTML."""
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location(
+        "report_figure", ROOT / "workflow" / "scripts" / "report_figure.py"
+    )
+    assert spec is not None
+    assert spec.loader is not None
+    report_figure = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(report_figure)
+    image = tmp_path / "<script>.png"
+    image.write_bytes(b"PNG")
+    rst = tmp_path / "caption.rst"
+    rst.write_text("A *caption*.", encoding="utf-8")
+    name = 'fig"><script>alert(1)</script>'
+    html = report_figure.figure_html(name, str(image), str(rst), "image/png", {})
+    assert "<script" not in html
+    assert html.startswith('<figure id="fig&#34;&gt;&lt;script&gt;alert(1)&lt;/script&gt;">')
+    assert 'alt="fig&#34;&gt;&lt;script&gt;' in html
+    assert f"<code>{tmp_path}/&lt;script&gt;.png</code>" in html
+    assert "<em>caption</em>" in html

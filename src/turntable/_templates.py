@@ -12,12 +12,12 @@ import os
 from typing import Any
 
 
-def render(name: str, folder: str | os.PathLike[str] | None = None, **context: Any) -> str:
-    """Render the template ``name`` with ``context``.
+def render(template: str, folder: str | os.PathLike[str] | None = None, /, **context: Any) -> str:
+    """Render the template ``template`` with ``context``.
 
     Parameters
     ----------
-    name : str
+    template : str
         File name of the template, e.g. ``claims.html.j2``; ``.html.j2`` is escaped for
         HTML, any other (``.md.j2``) is not.
     folder : str or os.PathLike, optional
@@ -50,7 +50,7 @@ def render(name: str, folder: str | os.PathLike[str] | None = None, **context: A
         lstrip_blocks=True,
         keep_trailing_newline=True,
     )
-    return env.get_template(name).render(**context)
+    return env.get_template(template).render(**context)
 
 
 def markup(html: str) -> Any:

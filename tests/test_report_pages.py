@@ -304,3 +304,29 @@ def test_a_figure_whose_name_and_image_hold_a_script_shows_them_as_text(tmp_path
     assert 'alt="fig&#34;&gt;&lt;script&gt;' in html
     assert f"<code>{tmp_path}/&lt;script&gt;.png</code>" in html
     assert "<em>caption</em>" in html
+
+
+def test_site_claims_table_shows_a_label_holding_a_script_as_text(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """docs/site_pages.py: the claims table of the site escapes every text of a claim."""
+    import importlib.util
+    import json
+
+    spec = importlib.util.spec_from_file_location("site_pages", ROOT / "docs" / "site_pages.py")
+    assert spec is not None
+    assert spec.loader is not None
+    site_pages = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(site_pages)
+    (tmp_path / "results").mkdir()
+    report = _report_with_script_everywhere()
+    (tmp_path / "results" / "claims.json").write_text(json.dumps(report), encoding="utf-8")
+    monkeypatch.setattr(site_pages, "ROOT", tmp_path)
+    monkeypatch.setattr(site_pages, "OUT", tmp_path / "generated")
+    site_pages.claims_table()
+    text = (tmp_path / "generated" / "claims.rst").read_text(encoding="utf-8")
+    table = text.split(".. raw:: html\n\n", 1)[1]
+    assert "<script" not in table
+    assert table.count("&lt;script&gt;") == 3 * 3  # label, claim and summary of 3 claims
+    assert all(line.startswith("   <") for line in table.splitlines())
+    assert table.count("<tr><td><code>") == 3

@@ -16,11 +16,6 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from blas_threads import one_blas_thread
-
-if __name__ == "__main__":
-    one_blas_thread()
-
 from collections.abc import Callable, Sequence
 from typing import Any
 
@@ -30,6 +25,7 @@ import numpy as np
 import _common
 import turntable as tt
 from _common import fmt, num, pf
+from blas_threads import one_blas_thread
 from turntable import reference
 
 NAME = "eigenvalues"
@@ -237,4 +233,5 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 
 if __name__ == "__main__":
+    one_blas_thread()
     sys.exit(main())

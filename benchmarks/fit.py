@@ -61,11 +61,6 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from blas_threads import one_blas_thread
-
-if __name__ == "__main__":
-    one_blas_thread()
-
 import math
 import shutil
 import subprocess
@@ -79,6 +74,7 @@ import numpy as np
 import _common
 import turntable as tt
 from _common import best_time
+from blas_threads import one_blas_thread
 from turntable import film, fit
 from turntable.config import validate
 
@@ -478,4 +474,5 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 
 if __name__ == "__main__":
+    one_blas_thread()
     sys.exit(main())

@@ -7,11 +7,10 @@ and the topic scripts it runs), ``benchmarks/pipeline.py`` and ``.ci/run``.
 from __future__ import annotations
 
 import json
-import os
-import tempfile
 from pathlib import Path
 from typing import Any
 
+from turntable._atomic import write_text
 from turntable.provenance import provenance
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -31,13 +30,4 @@ def merge_results(path: Path, sections: dict[str, Any]) -> None:
     record = provenance(ROOT)
     data["provenance"] = data.get("provenance", {}) | {key: record for key in sections}
     path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "w") as fh:
-            json.dump(data, fh, indent=2, allow_nan=False)
-            fh.write("\n")
-        os.chmod(tmp, 0o644)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    write_text(path, json.dumps(data, indent=2, allow_nan=False) + "\n")

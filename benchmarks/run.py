@@ -29,16 +29,12 @@ from collections.abc import Sequence
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from blas_threads import one_blas_thread
-
-if __name__ == "__main__":
-    one_blas_thread()
-
 import _common
 import eigenvalues
 import fit
 import solution
 import speed
+from blas_threads import one_blas_thread
 
 #: The topics, in the order they run.
 TOPICS = (eigenvalues, solution, speed, fit)
@@ -51,4 +47,5 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 
 if __name__ == "__main__":
+    one_blas_thread()
     sys.exit(main())

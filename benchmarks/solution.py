@@ -16,11 +16,6 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from blas_threads import one_blas_thread
-
-if __name__ == "__main__":
-    one_blas_thread()
-
 import warnings
 from collections.abc import Sequence
 from typing import Any
@@ -32,6 +27,7 @@ from numpy.typing import NDArray
 import _common
 import turntable as tt
 from _common import ERROR_MEASURE, INITIAL_STATES, K_BALL, K_SHELL, fmt, mp_error, num, pf
+from blas_threads import one_blas_thread
 from turntable import reference
 
 NAME = "solution"
@@ -269,4 +265,5 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 
 if __name__ == "__main__":
+    one_blas_thread()
     sys.exit(main())

@@ -31,17 +31,13 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from blas_threads import one_blas_thread
-
-if __name__ == "__main__":
-    one_blas_thread()
-
 import argparse
 import tempfile
 from typing import Any
 
 import numpy as np
 
+from blas_threads import one_blas_thread
 from results_file import ROOT, merge_results
 from video import COLOURS, GREYS, draw, measure, reliable_level, render, rgba
 
@@ -200,4 +196,5 @@ def main() -> None:
 
 
 if __name__ == "__main__":
+    one_blas_thread()
     main()

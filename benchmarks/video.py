@@ -35,11 +35,6 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from blas_threads import one_blas_thread
-
-if __name__ == "__main__":
-    one_blas_thread()
-
 import argparse
 import math
 import tempfile
@@ -50,6 +45,7 @@ from typing import Any
 import numpy as np
 
 import turntable as tt
+from blas_threads import one_blas_thread
 from results_file import ROOT, merge_results
 from turntable import film, fit
 from turntable.config import validate
@@ -423,4 +419,5 @@ def main() -> None:
 
 
 if __name__ == "__main__":
+    one_blas_thread()
     main()

@@ -10,7 +10,6 @@ rendered as the workflow renders them, with the configuration of ``config/config
 
 from __future__ import annotations
 
-import html
 import json
 import re
 import shutil
@@ -24,6 +23,8 @@ from types import SimpleNamespace
 import jinja2
 import yaml
 
+from turntable._atomic import write_text
+from turntable._templates import markup, render
 from turntable.claims.report import html_math, summary_line
 from turntable.config import validate
 from turntable.film import EXAMPLE_FILM
@@ -33,6 +34,8 @@ OUT = ROOT / "docs" / "_build" / "generated"
 #: The executed notebooks of ``make notebooks``, and where the site takes them from.
 NOTEBOOKS = ROOT / "results" / "notebooks"
 SITE_NOTEBOOKS = ROOT / "docs" / "notebooks"
+#: The templates of the generated parts.
+TEMPLATES = ROOT / "docs" / "templates"
 #: The arguments of ``turntable fit`` for `EXAMPLE_FILM` (its header gives the values).
 EXAMPLE_FIT_ARGS = ["--radius", "0.005", "--rpm", "33.3333333"]
 #: A number written with more digits than a page shows.
@@ -64,7 +67,7 @@ def _need(path: Path, command: str = "make") -> Path:
 
 def _write(name: str, text: str) -> None:
     OUT.mkdir(parents=True, exist_ok=True)
-    (OUT / name).write_text(text, encoding="utf-8")
+    write_text(OUT / name, text)
 
 
 def example_fit() -> None:
@@ -75,27 +78,21 @@ def example_fit() -> None:
 
 
 def claims_table() -> None:
-    """``claims.rst``: the counts, then one row a claim with its verdict."""
+    """``claims.rst``: the counts, then one row a claim with its verdict.
+
+    The table is HTML (template ``docs/templates/claims_table.html.j2``, escaped by
+    Jinja2: a claim's text is shown as text), given to Sphinx as it is.
+    """
     report = json.loads(_need(ROOT / "results" / "claims.json").read_text(encoding="utf-8"))
-    rows = []
-    for cid in report["order"]:
-        c = report["claims"][cid]
-        added = " <i>(addition)</i>" if c["source"] == "project" else ""
-        cells = (
-            f"<code>{html.escape(cid)}</code>{added}",
-            html.escape(str(c["where"]["label"])),
-            html_math(round_floats(str(c["claim"]))),
-            html_math(round_floats(str(c["summary"]))),
-            f'<span class="verdict verdict-{c["verdict"]}">{html.escape(c["verdict"])}</span>',
-        )
-        rows.append("<tr>" + "".join(f"<td>{x}</td>" for x in cells) + "</tr>")
-    head = "".join(
-        f"<th>{h}</th>" for h in ("id", "where in the paper", "claim", "reproduced", "verdict")
+    table = render(
+        "claims_table.html.j2",
+        TEMPLATES,
+        report=report,
+        headings=("id", "where in the paper", "claim", "reproduced", "verdict"),
+        math=lambda text: markup(html_math(round_floats(str(text)))),
     )
-    lines = [f"<table class='table claims'><thead><tr>{head}</tr></thead><tbody>", *rows]
-    table = "\n".join(f"   {line}" for line in [*lines, "</tbody></table>"])
     summary = summary_line(report["summary"]).replace("`", "``")
-    _write("claims.rst", f"{summary}\n\n.. raw:: html\n\n{table}\n")
+    _write("claims.rst", f"{summary}\n\n.. raw:: html\n\n{textwrap.indent(table, '   ')}")
 
 
 def _title(name: str) -> str:

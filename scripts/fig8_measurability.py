@@ -14,13 +14,12 @@ cannot be told apart. Also writes the numbers to results/film/measurability.json
 
 # %%
 import json
-import os
-from pathlib import Path
 
 import numpy as np
 
 from _style import DOUBLE, save, setup, subplots
 from turntable import film, fit
+from turntable._atomic import write_text
 
 setup(snakemake)
 p = snakemake.params
@@ -31,10 +30,7 @@ limit = fit.indistinguishable_above(table, p.selection_probability)
 numbers = fit.measurability_json(
     table, p.selection_probability, rig, reliable_level=p.reliable_relative_error
 )
-out = Path(snakemake.output.json)
-tmp = out.with_name(f".{out.name}.partial")
-tmp.write_text(json.dumps(numbers, indent=1))
-os.replace(tmp, out)
+write_text(snakemake.output.json, json.dumps(numbers, indent=1))
 
 
 def curve(ax, x, rel, color, style, label):

@@ -9,11 +9,10 @@ and the verdict of each check (turntable.study.section2_checks).
 # %%
 import json
 import logging
-import os
-from pathlib import Path
 
 import numpy as np
 
+from turntable._atomic import write_text
 from turntable.study import section2_checks
 
 logging.basicConfig(filename=snakemake.log[0], level=logging.INFO, filemode="w")
@@ -28,7 +27,4 @@ for name, ok in result["checks"].items():
     logging.info("k = %g: %-20s %s", k, name, "holds" if ok else "FAILS")
 
 # %%
-out = Path(snakemake.output[0])
-tmp = out.with_name(f".{out.name}.partial")
-tmp.write_text(json.dumps(result, indent=1) + "\n")
-os.replace(tmp, out)
+write_text(snakemake.output[0], json.dumps(result, indent=1) + "\n")

@@ -9,23 +9,20 @@ Also writes results/study/summary.json (turntable.study.summarize, with its prov
 
 # %%
 import json
-import os
 from pathlib import Path
 
 import matplotlib.pyplot as plt
 import numpy as np
 
 from _style import DOUBLE, save, setup
+from turntable._atomic import write_text
 from turntable.provenance import provenance
 from turntable.study import summarize
 
 setup(snakemake)
 results = [json.loads(Path(path).read_text()) for path in snakemake.input.results]
 summary = summarize(results) | {"provenance": provenance(Path(snakemake.scriptdir).parent)}
-out = Path(snakemake.output.json)
-tmp = out.with_name(f".{out.name}.partial")
-tmp.write_text(json.dumps(summary, indent=1) + "\n")
-os.replace(tmp, out)
+write_text(snakemake.output.json, json.dumps(summary, indent=1) + "\n")
 print("all checks hold" if summary["all_passed"] else f"failed: {summary['failed']}")
 
 # %%

@@ -12,11 +12,11 @@ page and the article read beside the fits.
 # %%
 import json
 import logging
-import os
 from pathlib import Path
 
 import turntable as tt
 from turntable import film, fit
+from turntable._atomic import write_text
 
 logging.basicConfig(filename=snakemake.log[0], level=logging.INFO, filemode="w")
 p = snakemake.params
@@ -59,7 +59,4 @@ for path in snakemake.output.csv:
     logging.info("wrote %s: %d frames of %s", path, data.t.size, spec)
 
 # %%
-out = Path(snakemake.output.truth)
-tmp = out.with_name(f".{out.name}.partial")
-tmp.write_text(json.dumps(truth, indent=1))
-os.replace(tmp, out)
+write_text(snakemake.output.truth, json.dumps(truth, indent=1))

@@ -7,7 +7,6 @@ same for values (pickled), one lock per value.
 
 from __future__ import annotations
 
-import fcntl
 import json
 import pickle
 import re
@@ -17,6 +16,9 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from filelock import FileLock, Timeout
+
+from turntable._atomic import replacing
 
 
 def shared_dir(tmp_path_factory: pytest.TempPathFactory, worker_id: str) -> Path:
@@ -34,8 +36,7 @@ def build_once(
     """
     target = shared / name
     record_file = shared / f"{name}.json"
-    with open(shared / f"{name}.lock", "w") as lock:
-        fcntl.flock(lock, fcntl.LOCK_EX)
+    with FileLock(shared / f"{name}.lock"):
         if not record_file.exists():
             shutil.rmtree(target, ignore_errors=True)
             target.mkdir(parents=True)
@@ -75,15 +76,14 @@ _BUSY = object()
 def _computed(folder: Path, key: str, compute: Callable[[str], Any], wait: bool) -> Any:
     stem = re.sub(r"[^A-Za-z0-9_.=-]", "_", key)
     result = folder / f"{stem}.pickle"
-    with open(folder / f"{stem}.lock", "w") as lock:
-        try:
-            fcntl.flock(lock, fcntl.LOCK_EX | (0 if wait else fcntl.LOCK_NB))
-        except BlockingIOError:
-            return _BUSY
+    try:
+        held = FileLock(folder / f"{stem}.lock").acquire(blocking=wait)
+    except Timeout:
+        return _BUSY
+    with held:
         if not result.exists():
             value = compute(key)
-            partial = result.with_suffix(".partial")
-            partial.write_bytes(pickle.dumps(value))
-            partial.replace(result)
+            with replacing(result) as tmp:
+                tmp.write_bytes(pickle.dumps(value))
             return value
         return pickle.loads(result.read_bytes())

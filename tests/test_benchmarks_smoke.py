@@ -6,6 +6,9 @@ from __future__ import annotations
 import importlib.util
 import json
 import math
+import os
+import subprocess
+import sys
 from pathlib import Path
 from types import ModuleType
 
@@ -101,3 +104,24 @@ def test_the_pipeline_benchmark_writes_every_row_between_the_guides_markers(
     for what, command, target in pipeline.ROWS.values():
         assert f"| {what} | `{command}` | 1, 2, 3 | 2 s | 4 s | {target:g} s |" in text
     assert pipeline.BEGIN in pipeline.GUIDE.read_text()
+
+
+@pytest.mark.parametrize(("keep", "threads"), [(False, 1), (True, 2)], ids=["unset", "set"])
+def test_one_blas_thread_after_numpy_is_imported(keep: bool, threads: int) -> None:
+    """numpy loads its BLAS with 2 threads; then `one_blas_thread` limits it to 1, unless
+    the environment still sets a number, which wins."""
+    code = (
+        "import os, sys, numpy\n"
+        "from threadpoolctl import threadpool_info\n"
+        f"sys.path.insert(0, {str(BENCHMARKS)!r})\n"
+        "from blas_threads import one_blas_thread\n"
+        f"if not {keep}: del os.environ['OPENBLAS_NUM_THREADS']\n"
+        "one_blas_thread()\n"
+        "print(*{i['num_threads'] for i in threadpool_info() if i['user_api'] == 'blas'})\n"
+    )
+    env = {k: v for k, v in os.environ.items() if not k.endswith("_NUM_THREADS")}
+    env["OPENBLAS_NUM_THREADS"] = "2"
+    out = subprocess.run(
+        [sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True
+    )
+    assert out.stdout.split() == [str(threads)]

@@ -606,6 +606,23 @@ def test_slowly_drifting_errors_get_standard_errors_that_cover(model: str) -> No
     assert np.mean(np.abs(z) < 2) >= 0.85
 
 
+def test_frame_noise_of_white_noise_is_its_standard_deviation() -> None:
+    """On a straight path with independent Gaussian noise of sd s, the median of the
+    squared normalised third differences over the median of chi-square(1) is s^2."""
+    rng = np.random.default_rng(5)
+    t = np.arange(200_000) / 60.0
+    xy = np.c_[0.1 * t, -0.2 * t] + rng.normal(0.0, 2e-3, (t.size, 2))
+    assert fit.frame_noise(t, xy) == pytest.approx(2e-3, rel=0.01)
+
+
+def test_the_normal_quantiles_are_those_of_scipy() -> None:
+    from scipy.stats import norm
+
+    two_sided, one_sided = fit.Z95, fit.Z95_ONE_SIDED
+    assert two_sided == pytest.approx(norm.ppf(0.975), rel=1e-15)
+    assert one_sided == pytest.approx(norm.ppf(0.95), rel=1e-15)
+
+
 def test_frame_noise_of_uneven_frames_and_of_a_film_without_noise() -> None:
     """The noise is measured with the frame times as they are (a variable frame rate is no
     noise); a ball tracked to whole millimetres that hardly moves has next to none, and

@@ -18,9 +18,28 @@ Z0 = np.array([1.0, 1.0, 0.0, 0.0, 0.0, 1.0])
     [[0.0, 0.0, 0.0], [1e-6, -2e-6, 3e-7], [0.3, -1.2, 0.5], [0.0, 0.0, 3.0], [-2.0, 1.0, 4.0]],
     ids=["zero", "tiny", "generic", "vertical", "large"],
 )
-def test_rotation_matrix_is_rodrigues(phi: list[float]) -> None:
-    expected = Rotation.from_rotvec(phi).as_matrix()
-    assert np.allclose(rotation_matrix(phi), expected, rtol=0, atol=1e-14)
+def test_rotation_matrix_turns_about_phi_by_its_length(phi: list[float]) -> None:
+    """exp([phi]x) keeps phi and turns a vector u perpendicular to it counterclockwise about
+    phi by |phi|: cos |phi| u + sin |phi| (phi / |phi|) x u."""
+    phi = np.array(phi)
+    q = rotation_matrix(phi)
+    angle = np.linalg.norm(phi)
+    axis = phi / angle if angle else np.array([0.0, 0.0, 1.0])
+    u = np.cross(axis, [1.0, 0.0, 0.0] if abs(axis[0]) < 0.9 else [0.0, 1.0, 0.0])
+    u /= np.linalg.norm(u)
+    assert np.allclose(q @ phi, phi, rtol=0, atol=1e-14)
+    turned = np.cos(angle) * u + np.sin(angle) * np.cross(axis, u)
+    assert np.allclose(q @ u, turned, rtol=0, atol=1e-14)
+    assert np.allclose(q.T @ q, np.eye(3), rtol=0, atol=1e-14)
+
+
+@pytest.mark.parametrize("shape", [(0,), (5,), (2, 4)])
+def test_rotation_matrix_of_an_array_of_vectors(shape: tuple[int, ...]) -> None:
+    phi = np.random.default_rng(2).normal(size=(*shape, 3))
+    q = rotation_matrix(phi)
+    assert q.shape == (*shape, 3, 3)
+    for index in np.ndindex(*shape):
+        assert np.allclose(q[index], rotation_matrix(phi[index]), rtol=0, atol=0)
 
 
 def test_constant_spin_is_exact() -> None:

@@ -25,7 +25,18 @@ UV = Path(sys.executable).with_name("uv")
 RUNTIME = {"numpy", "scipy"}
 #: The modules of the extras claims and config, which the light install must not load.
 EXTRAS_MODULES = ["sympy", "mpmath", "jsonschema", "yaml"]
-WORKFLOW_TOOLS = ["matplotlib", "snakemake", "jupytext", "typst", "nbclient", "PIL", "av", "cv2"]
+WORKFLOW_TOOLS = [
+    "matplotlib",
+    "snakemake",
+    "jupytext",
+    "typst",
+    "nbclient",
+    "PIL",
+    "av",
+    "cv2",
+    "jinja2",
+    "markupsafe",
+]
 # Prelude of a child interpreter in which importing a workflow tool raises ImportError.
 BLOCK = f"""
 import sys

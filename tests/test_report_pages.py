@@ -187,3 +187,146 @@ def test_claims_page_gives_the_evidence_of_each_verdict() -> None:
         verdict = report["claims"][cid]["verdict"]
         assert item.startswith(f"<code>{cid}</code> ({verdict}; decided by <code>err = 0.5 ")
         assert f"why {cid} is {verdict}" in item
+
+
+SCRIPT = "<script>alert('x')</script>"
+
+
+def _report_with_script_everywhere() -> dict:
+    report = _fake_report()
+    for claim in report["claims"].values():
+        claim |= {
+            "where": {"label": SCRIPT},
+            "claim": SCRIPT,
+            "summary": SCRIPT,
+            "paper_value": {"text": SCRIPT},
+            "evidence": SCRIPT,
+            "method": SCRIPT,
+            "decisive": "err",
+            "reproduced": {"err": SCRIPT},
+            "tolerance": {"err": {"<=": 1.0}},
+            "expected": claim["verdict"],
+        }
+    report["version"] = report["git_commit"] = SCRIPT
+    return report
+
+
+def test_claims_page_shows_a_label_holding_a_script_as_text() -> None:
+    page = to_html(_report_with_script_everywhere())
+    assert "<script" not in page
+    assert "&lt;script&gt;alert(&#39;x&#39;)&lt;/script&gt;" in page
+    assert page.count("&lt;script&gt;") == 2 + 3 * 6  # version, commit; 6 places a claim
+
+
+def test_claims_markdown_shows_a_label_holding_a_script_as_text() -> None:
+    """In Markdown a "<" before a letter or "/" would open an HTML tag: it is escaped (in a
+    code span, such as the commit's, it is text anyway)."""
+    from turntable.claims.report import to_markdown
+
+    text = to_markdown(_report_with_script_everywhere())
+    rows = [line for line in text.splitlines() if line.startswith("| `")]
+    assert len(rows) == 3
+    assert all(r"\<script>alert('x')\</script>" in row for row in rows)
+    outside_code = re.sub(r"`[^`]*`", "", text)
+    assert re.search(r"(?<!\\)<[A-Za-z/]", outside_code) is None
+
+
+def _film_inputs(text: str) -> tuple[dict, dict, dict, dict]:
+    """What `film_page` reads, for one SYNTHETIC film whose name, note and warnings are
+    ``text``."""
+    measure = {
+        "setup": {
+            "radius_m": 0.01,
+            "omega_rad_s": 3.5,
+            "k": 0.4,
+            "fps": 240.0,
+            "noise_m": 2e-4,
+            "duration_s": 10.0,
+        },
+        "table": {"mu0": [0.1, 1.0], "mu0_stderr": [0.01, 0.5], "selection_probability": [1, 0.5]},
+        "reliable_mu0_range": [0.1, 1.0],
+        "indistinguishable_above_mu0": 0.8,
+        "reliable_relative_error": 0.2,
+        "selection_probability": 0.95,
+    }
+    truth = {"note": text, "films": {text: {"model": "slipping", "coefficient": 3.0}}}
+    entry = {
+        "mu0": 3.0,
+        "mu0_stderr": 0.003,
+        "mu0_ci95": [2.99, 3.01],
+        "rms_residual_m": 2e-4,
+        "residual_lag1_autocorrelation": -0.004,
+        "residual_lag1_white_sd": 0.014,
+    }
+    fit = {
+        "data": {"synthetic": True, "n_frames": 2401, "duration_s": 10.0, "turntable_turns": 5.6},
+        "slipping": entry,
+        "selected": "slipping",
+        "selection": {"aicc_difference": 5486.1, "akaike_weights": {"slipping": 1.0}},
+        "warnings": [text, text],
+    }
+    return measure, truth, {text: fit}, {"fig8_measurability": "<figure>8</figure>"}
+
+
+def test_film_page_shows_a_film_holding_a_script_as_text() -> None:
+    from turntable.fit._page import film_page
+
+    page = film_page(*_film_inputs(SCRIPT))
+    assert "<script" not in page
+    escaped = "&lt;script&gt;alert(&#39;x&#39;)&lt;/script&gt;"
+    assert page.count(escaped) == 4  # the note, the film's name, its two warnings
+    assert f"{escaped}; {escaped}</td>" in page
+    assert "<figure>8</figure><h2>Synthetic films" in page  # a figure's HTML as it is
+    assert "for every &mu;<sub>0</sub> of the grid up to 1; beyond" in page
+    assert "<td>&mu;<sub>0</sub> = 3.0000 ± 0.0030</td><td>2.9900 to 3.0100</td>" in page
+
+
+def test_a_figure_whose_name_and_image_hold_a_script_shows_them_as_text(tmp_path: Path) -> None:
+    """workflow/scripts/report_figure.py: the id, the alt text, the name and the image's
+    path are escaped; the caption is docutils' HTML."""
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location(
+        "report_figure", ROOT / "workflow" / "scripts" / "report_figure.py"
+    )
+    assert spec is not None
+    assert spec.loader is not None
+    report_figure = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(report_figure)
+    image = tmp_path / "<script>.png"
+    image.write_bytes(b"PNG")
+    rst = tmp_path / "caption.rst"
+    rst.write_text("A *caption*.", encoding="utf-8")
+    name = 'fig"><script>alert(1)</script>'
+    html = report_figure.figure_html(name, str(image), str(rst), "image/png", {})
+    assert "<script" not in html
+    assert html.startswith('<figure id="fig&#34;&gt;&lt;script&gt;alert(1)&lt;/script&gt;">')
+    assert 'alt="fig&#34;&gt;&lt;script&gt;' in html
+    assert f"<code>{tmp_path}/&lt;script&gt;.png</code>" in html
+    assert "<em>caption</em>" in html
+
+
+def test_site_claims_table_shows_a_label_holding_a_script_as_text(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """docs/site_pages.py: the claims table of the site escapes every text of a claim."""
+    import importlib.util
+    import json
+
+    spec = importlib.util.spec_from_file_location("site_pages", ROOT / "docs" / "site_pages.py")
+    assert spec is not None
+    assert spec.loader is not None
+    site_pages = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(site_pages)
+    (tmp_path / "results").mkdir()
+    report = _report_with_script_everywhere()
+    (tmp_path / "results" / "claims.json").write_text(json.dumps(report), encoding="utf-8")
+    monkeypatch.setattr(site_pages, "ROOT", tmp_path)
+    monkeypatch.setattr(site_pages, "OUT", tmp_path / "generated")
+    site_pages.claims_table()
+    text = (tmp_path / "generated" / "claims.rst").read_text(encoding="utf-8")
+    table = text.split(".. raw:: html\n\n", 1)[1]
+    assert "<script" not in table
+    assert table.count("&lt;script&gt;") == 3 * 3  # label, claim and summary of 3 claims
+    assert all(line.startswith("   <") for line in table.splitlines())
+    assert table.count("<tr><td><code>") == 3

@@ -7,7 +7,6 @@ of the scripts on ``sys.path``, so they import this package as ``_style``.
 
 from __future__ import annotations
 
-import os
 import sys
 from pathlib import Path
 from typing import Any
@@ -19,6 +18,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.figure import Figure
+
+from turntable._atomic import replacing
 
 STYLE = Path(__file__).with_name("turntable.mplstyle")
 
@@ -109,11 +110,6 @@ def save(fig: Figure, snakemake: Any) -> None:
         Supplies ``output.pdf``, ``output.png`` and ``params.dpi``.
     """
     for fmt in ("pdf", "png"):
-        path = Path(snakemake.output[fmt])
-        tmp = path.with_name(f".{path.name}.partial")
-        try:
+        with replacing(snakemake.output[fmt]) as tmp:
             fig.savefig(tmp, format=fmt, dpi=snakemake.params.dpi, metadata=_METADATA[fmt])
-            os.replace(tmp, path)
-        finally:
-            tmp.unlink(missing_ok=True)
     print(f"wrote {snakemake.output.pdf} and {snakemake.output.png}")

@@ -9,12 +9,13 @@ one fixed palette and no anti-aliasing, so two runs write the same bytes.
 from __future__ import annotations
 
 import math
-import os
 from pathlib import Path
 
 import numpy as np
 from numpy.typing import NDArray
 from PIL import Image, ImageDraw, ImageFont
+
+from turntable._atomic import replacing
 
 # Palette indices and colours (RGB).
 WHITE, PLANE, RING, SPOKE, MARK, TRAIL, CENTRE, TEXT, OUTLINE = range(9)
@@ -111,13 +112,8 @@ def side_by_side(frames: list[Image.Image], gap: int = 4) -> Image.Image:
 
 def save_gif(frames: list[Image.Image], path: str | Path, frame_ms: int) -> None:
     """Write an endlessly looping GIF atomically (temporary file, then rename)."""
-    path = Path(path)
-    tmp = path.with_name(f".{path.name}.partial")
-    try:
+    with replacing(path) as tmp:
         frames[0].save(
             tmp, format="GIF", save_all=True, append_images=frames[1:], duration=frame_ms,
             loop=0, optimize=False,
         )  # fmt: skip
-        os.replace(tmp, path)
-    finally:
-        tmp.unlink(missing_ok=True)

@@ -24,7 +24,6 @@ import csv
 import math
 import os
 import re
-import tempfile
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any, NamedTuple
@@ -33,6 +32,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from turntable import _validate
+from turntable._atomic import write_text
 
 #: The columns a film must have: time (s) and the centre's position (m).
 COLUMNS = ("t", "x", "y")
@@ -575,12 +575,4 @@ def write_film(
         f"{t:.{digits}g},{x:.{digits}g},{y:.{digits}g}"
         for t, x, y in zip(film.t, film.x, film.y, strict=True)
     ]
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "w") as fh:
-            fh.write("\n".join(lines) + "\n")
-        os.chmod(tmp, 0o644)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    write_text(path, "\n".join(lines) + "\n")

@@ -27,28 +27,24 @@ def rotation_matrix(phi: ArrayLike) -> NDArray[np.float64]:
     numpy.ndarray
         Shape ``phi.shape[:-1] + (3, 3)``, orthogonal with determinant 1.
 
+    See Also
+    --------
+    scipy.spatial.transform.Rotation.from_rotvec : The rotations, whose matrices these are.
+
     Notes
     -----
     Rodrigues' formula, exp([phi]x) = I + sin(a)/a [phi]x + (1 - cos a)/a^2 [phi]x^2 with
-    a = |phi|; the two coefficients use their Taylor series below a = 1e-4.
+    a = |phi|, as `scipy.spatial.transform.Rotation` evaluates it (accurate for small a).
     """
+    from scipy.spatial.transform import Rotation
+
     phi = np.asarray(phi, dtype=float)
     if phi.shape[-1:] != (3,) or not np.all(np.isfinite(phi)):
         raise ValueError(f"phi must be finite with last axis of length 3, got shape {phi.shape}")
-    a2 = np.sum(phi * phi, axis=-1)
-    a = np.sqrt(a2)
-    small = a < 1e-4
-    safe = np.where(small, 1.0, a)
-    c1 = np.where(small, 1.0 - a2 / 6.0, np.sin(safe) / safe)
-    c2 = np.where(small, 0.5 - a2 / 24.0, (1.0 - np.cos(safe)) / safe**2)
-    x, y, z = phi[..., 0], phi[..., 1], phi[..., 2]
-    zero = np.zeros_like(x)
-    k = np.stack(
-        [np.stack([zero, -z, y], -1), np.stack([z, zero, -x], -1), np.stack([-y, x, zero], -1)],
-        -2,
-    )
-    eye = np.broadcast_to(np.eye(3), k.shape)
-    return eye + c1[..., None, None] * k + c2[..., None, None] * (k @ k)
+    flat = phi.reshape(-1, 3)
+    if not flat.size:
+        return np.empty((*phi.shape[:-1], 3, 3))
+    return Rotation.from_rotvec(flat).as_matrix().reshape(*phi.shape[:-1], 3, 3)
 
 
 def integrate_orientation(

@@ -55,7 +55,7 @@ FIGURES = yaml.safe_load(Path(workflow.basedir, "figures.yaml").read_text())
 PACKAGE = sorted(
     str(p.relative_to(ROOT))
     for p in (ROOT / "src" / "turntable").rglob("*")
-    if p.suffix in {".py", ".yaml"} and not p.name.startswith(".")
+    if p.suffix in {".py", ".yaml", ".j2"} and not p.name.startswith(".")
 )
 STYLE = ["scripts/_style/__init__.py", "scripts/_style/turntable.mplstyle"]
 

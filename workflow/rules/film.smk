@@ -73,7 +73,11 @@ rule film_page:
         captions=expand(
             "workflow/report/{name}.rst", name=["fig8_measurability", "fig9_fit"]
         ),
-        code=[*PACKAGE, "workflow/scripts/report_figure.py"],
+        code=[
+            *PACKAGE,
+            "workflow/scripts/report_figure.py",
+            "workflow/templates/figure.html.j2",
+        ],
     output:
         ensure(
             report(

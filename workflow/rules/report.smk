@@ -11,7 +11,11 @@ rule figure_gallery:
         captions=expand("workflow/report/{name}.rst", name=FIGURES),
         animation="figures/animation.gif",
         animation_caption="workflow/report/animation.rst",
-        code="workflow/scripts/report_figure.py",
+        code=[
+            "workflow/scripts/report_figure.py",
+            "workflow/templates/figure.html.j2",
+            "workflow/templates/figures.html.j2",
+        ],
     output:
         ensure(
             report(

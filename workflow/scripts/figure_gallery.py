@@ -7,10 +7,11 @@ workflow/scripts/report_figure.py, embedded, so the page is self-contained.
 """
 
 import logging
-import os
-from pathlib import Path
 
-from report_figure import figure_html
+from report_figure import TEMPLATES, figure_html
+
+from turntable._atomic import write_text
+from turntable._templates import render
 
 logging.basicConfig(filename=snakemake.log[0], level=logging.INFO, filemode="w")
 
@@ -29,19 +30,7 @@ for name, png, rst in zip(
     snakemake.params.names, snakemake.input.pngs, snakemake.input.captions, strict=True
 ):
     sections.append(figure_html(name, png, rst, "image/png", snakemake.config))
-page = (
-    '<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8"><title>Figures</title>'
-    "<style>body{font-family:sans-serif;font-size:14px;max-width:60em;margin:auto}"
-    "img{max-width:100%;display:block;margin:auto}figure{margin:2em 0;border-bottom:1px solid #ccc}"
-    "figcaption p{display:inline}</style></head><body>\n<h1>Figures of the reproduction</h1>\n"
-    "<p>The animation of the ball, then every figure of the reproduction with its caption, "
-    "numbered as its file name (figN), as in the article and the README. Figures of the "
-    "original paper are named as the paper's (e.g. the paper's Fig. 4).</p>\n"
-    + "\n".join(sections)
-    + "\n</body></html>\n"
-)
-out = Path(snakemake.output[0])
-tmp = out.with_name(f".{out.name}.partial")
-tmp.write_text(page, encoding="utf-8")
-os.replace(tmp, out)
+page = render("figures.html.j2", TEMPLATES, figures=sections)
+out = snakemake.output[0]
+write_text(out, page)
 logging.info("wrote %s with the animation and %d figures", out, len(sections) - 1)

@@ -6,11 +6,11 @@ with Figures 8 and 9 and their captions (workflow/scripts/report_figure.py). Run
 
 import json
 import logging
-import os
 from pathlib import Path
 
 from report_figure import figure_html
 
+from turntable._atomic import write_text
 from turntable.fit._page import film_page
 
 logging.basicConfig(filename=snakemake.log[0], level=logging.INFO, filemode="w")
@@ -28,8 +28,6 @@ figures = {
     )
 }
 page = film_page(read(snakemake.input.measurability), read(snakemake.input.truth), fits, figures)
-out = Path(snakemake.output[0])
-tmp = out.with_name(f".{out.name}.partial")
-tmp.write_text(page, encoding="utf-8")
-os.replace(tmp, out)
+out = snakemake.output[0]
+write_text(out, page)
 logging.info("wrote %s: %d films", out, len(fits))

@@ -16,6 +16,7 @@ from typing import Any
 
 import turntable
 from turntable import reference
+from turntable._atomic import write_text
 from turntable.claims import VERDICTS, evaluate_all, resolve_params
 from turntable.claims._core import clean, split_bound
 
@@ -117,10 +118,6 @@ def to_json(report: Mapping[str, Any]) -> str:
     return json.dumps(report, indent=2, sort_keys=True, ensure_ascii=False, allow_nan=False) + "\n"
 
 
-def _cell(text: Any) -> str:
-    return str(text).replace("|", "\\|").replace("\n", " ")
-
-
 def _paper_value(value: Mapping[str, Any] | None) -> str:
     if not value:
         return "-"
@@ -199,55 +196,53 @@ def decisive_lines(report: Mapping[str, Any]) -> list[str]:
     ]
 
 
+#: The title of the claims table, in Markdown and in HTML.
+TITLE = "Claims of Ivanova (2019) and their reproduction"
+#: The columns of the Markdown table and of the HTML page.
+HEADINGS = ("id", "where in the paper", "claim", "paper's value", "reproduced", "verdict")
+#: Something that would open an HTML tag in Markdown: a "<" before a letter, "/", "!" or "?".
+_MARKDOWN_TAG = re.compile(r"<(?=[A-Za-z/!?])")
+
+
+def _cell(text: Any) -> str:
+    """Text as one cell of a Markdown table: "|" and a tag's "<" escaped, lines joined."""
+    return _MARKDOWN_TAG.sub(r"\\<", str(text).replace("|", "\\|").replace("\n", " "))
+
+
 def to_markdown(report: Mapping[str, Any]) -> str:
-    """Render a report as a Markdown document with one table row per claim."""
-    lines = [
-        "# Claims of Ivanova (2019) and their reproduction",
-        "",
-        f"turntable {report['version']}, commit `{report['git_commit']}`. "
-        + summary_line(report["summary"]),
-        "",
-        "Verdicts: "
-        + "; ".join(f"**{v}**: {VERDICT_MEANINGS[v]}" for v in VERDICTS)
-        + ". Claims added by the reproduction (not the paper's) are marked *(addition)*; "
-        "their location says what in the paper they build on.",
-        "",
-        "| id | where in the paper | claim | paper's value | reproduced | verdict |",
-        "|---|---|---|---|---|---|",
-    ]
-    for cid in report["order"]:
-        c = report["claims"][cid]
-        lines.append(
-            "| "
-            + " | ".join(
-                _cell(x)
-                for x in (
-                    f"`{cid}`" + (" *(addition)*" if c["source"] == "project" else ""),
-                    c["where"]["label"],
-                    c["claim"],
-                    _paper_value(c["paper_value"]),
-                    c["summary"],
-                    f"**{c['verdict']}**",
-                )
-            )
-            + " |"
-        )
-    lines += ["", "## Evidence", ""]
-    for cid in report["order"]:
-        c = report["claims"][cid]
-        lines.append(
-            f"- `{cid}` ({c['verdict']}; decided by {_cell(decisive_value(c))}): "
-            f"{_cell(c['evidence'])}"
-        )
-    lines += ["", "## Reproduced values and their bounds", ""]
-    for cid in report["order"]:
-        c = report["claims"][cid]
-        lines.append(f"- `{cid}`: {_cell(values_and_bounds(c))}")
-    lines += ["", "## Methods", ""]
-    for cid in report["order"]:
-        c = report["claims"][cid]
-        lines.append(f"- `{cid}`: {_cell(c['method'])}")
-    return "\n".join(lines) + "\n"
+    """Render a report as a Markdown document with one table row per claim.
+
+    Parameters
+    ----------
+    report : mapping
+        A claims report (`build_report`, or ``results/claims.json`` read back).
+
+    Returns
+    -------
+    str
+        The counts, the meaning of each verdict, the table, then the evidence, the
+        reproduced values with their bounds and the method of each claim (template
+        ``turntable/templates/claims.md.j2``). A cell's text stays text: a ``|`` and a
+        ``<`` that would open an HTML tag are escaped.
+
+    See Also
+    --------
+    to_html : The same table as an HTML page.
+    """
+    from turntable._templates import render
+
+    return render(
+        "claims.md.j2",
+        title=TITLE,
+        headings=HEADINGS,
+        report=report,
+        summary=summary_line(report["summary"]),
+        meanings={v: VERDICT_MEANINGS[v] for v in VERDICTS},
+        cell=_cell,
+        paper_value=_paper_value,
+        decisive_value=decisive_value,
+        values_and_bounds=values_and_bounds,
+    )
 
 
 _GREEK = {
@@ -346,11 +341,6 @@ def html_math(text: str) -> str:
     return "".join(out)
 
 
-def _code_ids(text: str) -> str:
-    """HTML: the `id` spans of a summary line as <code> elements."""
-    return re.sub(r"`([^`]+)`", r"<code>\1</code>", text)
-
-
 _VERDICT_COLOURS = {
     "confirmed": "#1b7837",
     "refined": "#b35806",
@@ -364,59 +354,39 @@ def to_html(report: Mapping[str, Any]) -> str:
     """Render a report as a self-contained HTML page: the counts, the table of claims, then
     the evidence of each verdict with the value that decides it.
 
-    The columns are those of :func:`to_markdown`; the verdict is coloured. Shown in the
-    HTML report of the workflow (rule ``claims_table``).
-    """
-    from html import escape
+    Parameters
+    ----------
+    report : mapping
+        A claims report (`build_report`, or ``results/claims.json`` read back).
 
-    rows = []
-    for cid in report["order"]:
-        c = report["claims"][cid]
-        colour = _VERDICT_COLOURS.get(c["verdict"], "#000000")
-        cells = (
-            f"<code>{escape(cid)}</code>"
-            + (" <i>(addition)</i>" if c["source"] == "project" else ""),
-            escape(str(c["where"]["label"])),
-            html_math(str(c["claim"])),
-            html_math(_paper_value(c["paper_value"])),
-            html_math(str(c["summary"])),
-            f'<b style="color:{colour}">{escape(c["verdict"])}</b>',
-        )
-        rows.append("<tr>" + "".join(f"<td>{x}</td>" for x in cells) + "</tr>")
-    head = "".join(
-        f"<th>{h}</th>"
-        for h in ("id", "where in the paper", "claim", "paper's value", "reproduced", "verdict")
-    )
-    # why each verdict is what it is, and the value that decides it (as in claims.md)
-    evidence = [
-        f"<li><code>{escape(cid)}</code> ({escape(c['verdict'])}"
-        + (
-            f"; decided by <code>{escape(decisive_value(c))}</code>"
-            if c.get("decisive") is not None
-            else ""
-        )
-        + f"): {html_math(str(c['evidence']))}</li>"
-        for cid in report["order"]
-        if "evidence" in (c := report["claims"][cid])
-    ]
-    return (
-        '<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">'
-        "<title>Claims of Ivanova (2019) and their reproduction</title><style>"
-        "body{font-family:sans-serif;font-size:14px}table{border-collapse:collapse}"
-        "td,th{border:1px solid #ccc;padding:4px 6px;text-align:left;vertical-align:top}"
-        "</style></head><body>\n"
-        "<h1>Claims of Ivanova (2019) and their reproduction</h1>\n"
-        f"<p>{_code_ids(escape(summary_line(report['summary'])))} "
-        f"turntable {escape(report['version'])}, "
-        f"commit <code>{escape(report['git_commit'])}</code>. Sections, equations and "
-        "figures in the second column are those of the original paper; a claim the "
-        "reproduction adds is marked <i>(addition)</i>, its location says what in the paper "
-        "it builds on.</p>\n"
-        f"<table>\n<thead><tr>{head}</tr></thead>\n<tbody>\n"
-        + "\n".join(rows)
-        + "\n</tbody>\n</table>\n"
-        + ("<h2>Evidence</h2>\n<ul>\n" + "\n".join(evidence) + "\n</ul>\n" if evidence else "")
-        + "</body></html>\n"
+    Returns
+    -------
+    str
+        The page (template ``turntable/templates/claims.html.j2``, escaped by Jinja2: any
+        text of the report is shown as text). The columns are those of `to_markdown`; the
+        verdict is coloured. Shown in the HTML report of the workflow (rule
+        ``claims_table``).
+
+    See Also
+    --------
+    html_math : The plain-text mathematics of a claim, typeset.
+    """
+    from turntable._templates import escape, markup, render
+
+    summary = re.sub(r"`([^`]+)`", r"<code>\1</code>", str(escape(summary_line(report["summary"]))))
+    return render(
+        "claims.html.j2",
+        title=TITLE,
+        headings=HEADINGS,
+        report=report,
+        summary=markup(summary),
+        colours=_VERDICT_COLOURS,
+        evidence=[
+            (cid, c) for cid in report["order"] if "evidence" in (c := report["claims"][cid])
+        ],
+        math=lambda text: markup(html_math(str(text))),
+        paper_value=_paper_value,
+        decisive_value=decisive_value,
     )
 
 
@@ -431,7 +401,6 @@ def write_reports(
     """Build the report and write it as JSON and as Markdown; return it."""
     report = build_report(params, commit=commit, provenance=provenance)
     for path, text in ((json_path, to_json(report)), (md_path, to_markdown(report))):
-        path = Path(path)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(text, encoding="utf-8")
+        Path(path).parent.mkdir(parents=True, exist_ok=True)
+        write_text(path, text)
     return report

@@ -24,6 +24,7 @@ coordinates left (N - K - 1 for the larger model) no model is selected.
 from __future__ import annotations
 
 import math
+from statistics import NormalDist
 from typing import Any
 
 import numpy as np
@@ -62,7 +63,7 @@ OMEGA_FACTOR = 2.0
 #: Residual of a trial point whose solution would overflow a double (see `max_time`).
 _OVERFLOW_RESIDUAL = 1e100
 #: One-sided 95 % quantile of the normal distribution (the limits at a bound).
-Z95_ONE_SIDED = 1.6448536269514722
+Z95_ONE_SIDED = NormalDist().inv_cdf(0.95)
 #: A fit whose rms residual is at most this fraction of the largest distance of the tracked
 #: centre from the axis reproduces the positions to rounding: the film carries no noise by
 #: which to weigh the fits (a noiseless film, or a ball at rest tracked to whole pixels).

@@ -148,14 +148,11 @@ def _hac_stderr_of(jac: NDArray[np.float64], i: int, residuals: NDArray, lags: i
 
 
 def _kernel_times(v: NDArray[np.float64], a: float) -> NDArray[np.float64]:
-    """K v for K_ij = a^|i - j| along axis 0: a convolution, by FFT."""
-    n = v.shape[0]
-    size = 1 << (2 * n).bit_length()
-    kernel = np.zeros(size)
-    kernel[:n] = a ** np.arange(n)
-    kernel[size - n + 1 :] = kernel[n - 1 : 0 : -1]
-    spectrum = np.fft.rfft(kernel).reshape(-1, *[1] * (v.ndim - 1))
-    return np.fft.irfft(spectrum * np.fft.rfft(v, size, axis=0), size, axis=0)[:n]
+    """K v for the symmetric Toeplitz K_ij = a^|i - j| along axis 0 (by FFT, in scipy)."""
+    from scipy.linalg import matmul_toeplitz
+
+    column = a ** np.arange(v.shape[0])
+    return matmul_toeplitz(column, v.reshape(v.shape[0], -1)).reshape(v.shape)
 
 
 def slow_noise(jac: NDArray[np.float64], residuals: NDArray[np.float64]) -> tuple[float, ...]:

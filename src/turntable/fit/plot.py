@@ -11,13 +11,13 @@ from __future__ import annotations
 
 import math
 import os
-import tempfile
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from turntable._atomic import replacing
 from turntable.film import Film
 from turntable.fit.io import fitted_positions
 from turntable.fit.models import COEFFICIENT, MODELS
@@ -210,12 +210,8 @@ def plot_fit(path: str | os.PathLike[str], film: Film, result: dict[str, Any]) -
     ax_r.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.15), ncols=2)
     fig.suptitle(f"{result['data']['file']}: {selection_text(result)}", fontsize=9)
     path = Path(path)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.stem}.", suffix=path.suffix)
-    os.close(fd)
     try:
-        fig.savefig(tmp, dpi=150)
-        os.chmod(tmp, 0o644)
-        os.replace(tmp, path)
+        with replacing(path) as tmp:
+            fig.savefig(tmp, dpi=150)
     finally:
-        Path(tmp).unlink(missing_ok=True)
         plt.close(fig)

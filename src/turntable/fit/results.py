@@ -12,13 +12,14 @@ smooth structure and a large positive value.
 from __future__ import annotations
 
 import math
+from statistics import NormalDist
 from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 #: Two-sided 95 % quantile of the normal distribution (the `*_ci95` intervals).
-Z95 = 1.959963984540054
+Z95 = NormalDist().inv_cdf(0.975)
 #: AICc differences of at least this much are decisive (Burnham and Anderson: above 10,
 #: essentially no support for the other model).
 DECISIVE = 10.0
@@ -300,7 +301,7 @@ def frame_noise(t: ArrayLike, xy: ArrayLike) -> float:
     Returns
     -------
     float
-        :math:`\sqrt{\operatorname{median}(e^2) / 0.4549}` over both coordinates, e the third
+        :math:`\sqrt{\operatorname{median}(e^2) / m_1}` over both coordinates, e the third
         divided differences of four consecutive frames divided by the root of the sum of
         their squared weights; nan for fewer than 4 frames.
 
@@ -312,9 +313,10 @@ def frame_noise(t: ArrayLike, xy: ArrayLike) -> float:
     :math:`s^2` gives it the variance :math:`s^2 \sum_j w_j^2` (for equal steps, the
     binomial 1, 3, 3, 1: :math:`20 s^2 / (6\, \Delta t^3)^2`).
     The frame times count as they are, so a variable frame rate (or a gap) is no noise.
-    0.4549 is the median of chi-square with one degree of freedom: the median keeps the
-    few differences across a gap of lost frames from counting.  Noise correlated from
-    frame to frame gives a smaller value: it is the noise that no smooth model can follow.
+    :math:`m_1 \approx 0.4549` is the median of chi-square with one degree of freedom
+    (`scipy.special.chdtri`): the median keeps the few differences across a gap of lost
+    frames from counting.  Noise correlated from frame to frame gives a smaller value: it
+    is the noise that no smooth model can follow.
 
     Examples
     --------
@@ -326,6 +328,8 @@ def frame_noise(t: ArrayLike, xy: ArrayLike) -> float:
     >>> print(f"{fit.frame_noise(t, xy):.1e}")
     1.0e-03
     """
+    from scipy.special import chdtri
+
     t = np.asarray(t, dtype=float)
     xy = np.asarray(xy, dtype=float)
     n = t.size - 3
@@ -339,7 +343,7 @@ def frame_noise(t: ArrayLike, xy: ArrayLike) -> float:
                 w[:, j] /= windows[:, j] - windows[:, k]
     w /= np.sqrt(np.sum(w**2, axis=1, keepdims=True))
     e = np.stack([sum(w[:, j, None] * xy[j : j + n] for j in range(4))])
-    return math.sqrt(float(np.median(e**2)) / 0.4549)
+    return math.sqrt(float(np.median(e**2)) / chdtri(1, 0.5))
 
 
 class FilmFit(NamedTuple):

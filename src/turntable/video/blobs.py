@@ -248,6 +248,8 @@ def outline_centre(
     rise = (after - np.minimum.accumulate(after, axis=1)).max(axis=1)
     clear = float(np.percentile(depth, 90))
     weight = np.clip(2 * depth / clear, 0.0, 1.0) * (rise < RISE * clear)
+    from scipy.stats import median_abs_deviation
+
     pts, weight = pts[weight > 0], weight[weight > 0]
     keep = np.ones(len(pts), bool)
     centre = np.asarray(start, float)
@@ -262,7 +264,7 @@ def outline_centre(
             centre = centre - np.linalg.lstsq(jac * sw, (dist - radius) * sw[:, 0], rcond=None)[0]
         dev = np.hypot(*(pts - centre).T) - radius  # of every point: a dropped one may return
         mid = float(np.median(dev[keep]))
-        spread = 1.4826 * float(np.median(np.abs(dev[keep] - mid))) + 0.1
+        spread = float(median_abs_deviation(dev[keep], scale="normal")) + 0.1
         again = np.abs(dev - mid) < min(3 * spread, EDGE_OFF)
         if (again == keep).all():
             break

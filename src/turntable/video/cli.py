@@ -19,7 +19,6 @@ import logging
 import math
 import os
 import sys
-import tempfile
 from pathlib import Path
 from typing import Any
 
@@ -163,20 +162,13 @@ def header(track: Any, json_name: str) -> list[str]:
 
 def write_outputs(csv_path: Path, track: Any, cal_json: dict[str, Any]) -> None:
     """Write FILM.csv and FILM.json, each under a temporary name, then rename both."""
+    from turntable._atomic import replacing
     from turntable.film import write_film
 
     json_path = csv_path.with_suffix(".json")
-    fd, tmp = tempfile.mkstemp(dir=csv_path.parent, prefix=f".{json_path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "w") as fh:
-            json.dump(cal_json, fh, indent=1, allow_nan=False)
-            fh.write("\n")
-        os.chmod(tmp, 0o644)
+    with replacing(json_path) as tmp:
+        tmp.write_text(json.dumps(cal_json, indent=1, allow_nan=False) + "\n", encoding="utf-8")
         write_film(csv_path, track.film, header(track, json_path.name))
-        os.replace(tmp, json_path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
 
 
 def _check_number(option: str, value: float | None) -> None:

@@ -12,6 +12,8 @@ from typing import Any, NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
+from turntable._atomic import replacing
+
 #: Word of a video's metadata (or file name) that marks it as rendered, not filmed.
 SYNTHETIC = "SYNTHETIC"
 
@@ -226,24 +228,18 @@ def write_video(
     import av
 
     time_base = Fraction(1, 90000)
-    tmp = path.with_name(f".{path.name}.partial{path.suffix}")
-    try:
-        with av.open(str(tmp), "w") as out:
-            out.metadata["title"] = f"{SYNTHETIC} turntable video"
-            out.metadata["comment"] = f"{SYNTHETIC}: {comment}, not filmed"
-            stream = out.add_stream("libx264", rate=Fraction(fps).limit_denominator(10000))
-            stream.width, stream.height = size
-            stream.pix_fmt = "yuv420p"
-            stream.time_base = time_base
-            stream.codec_context.time_base = time_base
-            stream.options = {"crf": str(crf), "preset": "ultrafast"}
-            for t, img in frames:
-                frame = av.VideoFrame.from_ndarray(yuv420(img), format="yuv420p")
-                frame.pts = round(t / time_base)
-                frame.time_base = time_base
-                out.mux(stream.encode(frame))
-            out.mux(stream.encode(None))
-        os.replace(tmp, path)
-    except BaseException:
-        tmp.unlink(missing_ok=True)
-        raise
+    with replacing(path) as tmp, av.open(str(tmp), "w") as out:
+        out.metadata["title"] = f"{SYNTHETIC} turntable video"
+        out.metadata["comment"] = f"{SYNTHETIC}: {comment}, not filmed"
+        stream = out.add_stream("libx264", rate=Fraction(fps).limit_denominator(10000))
+        stream.width, stream.height = size
+        stream.pix_fmt = "yuv420p"
+        stream.time_base = time_base
+        stream.codec_context.time_base = time_base
+        stream.options = {"crf": str(crf), "preset": "ultrafast"}
+        for t, img in frames:
+            frame = av.VideoFrame.from_ndarray(yuv420(img), format="yuv420p")
+            frame.pts = round(t / time_base)
+            frame.time_base = time_base
+            out.mux(stream.encode(frame))
+        out.mux(stream.encode(None))

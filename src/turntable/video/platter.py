@@ -162,13 +162,15 @@ def rim_points(
 def refine_rim(level: NDArray[np.float32], rim: Ellipse) -> tuple[Ellipse, NDArray]:
     """The rim fitted again to its points to a fraction of a pixel, outliers (the ball or
     the mark at the rim) left out; returns the ellipse and the points kept."""
+    from scipy.stats import median_abs_deviation
+
     pts = rim_points(level, rim)
     for k in range(3):
         if len(pts) < 20:
             break
         rim = fit_ellipse(pts)
         dev = (rim.radius(pts) - 1.0) * rim.b
-        spread = 1.4826 * np.median(np.abs(dev - np.median(dev))) + 0.05
+        spread = median_abs_deviation(dev, scale="normal") + 0.05
         pts = pts[np.abs(dev) < 4 * spread]
         pts = rim_points(level, rim) if k == 0 else pts
     return rim, pts

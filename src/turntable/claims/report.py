@@ -159,6 +159,21 @@ def values_and_bounds(claim: Mapping[str, Any]) -> str:
     )
 
 
+def printed_values(claim: Mapping[str, Any]) -> str:
+    """Return ``key = value: what it measures (its parameters)`` for every number of the claim
+    the article prints, from its record (`turntable.claims.Quantity`)."""
+    from turntable.claims._core import Quantity
+
+    lines = []
+    for key, record in claim.get("quantities", {}).items():
+        label = Quantity(**record).label()
+        lines.append(
+            f"`{key}` = {claim['reproduced'][key]}: {record['of']}"
+            + (f" ({label})" if label else "")
+        )
+    return "; ".join(lines)
+
+
 def decisive_value(claim: Mapping[str, Any]) -> str:
     """Return ``key = value (bound)`` for the reproduced value that decides the verdict.
 
@@ -221,7 +236,8 @@ def to_markdown(report: Mapping[str, Any]) -> str:
     -------
     str
         The counts, the meaning of each verdict, the table, then the evidence, the
-        reproduced values with their bounds and the method of each claim (template
+        reproduced values with their bounds, the numbers the article prints with what each
+        is and where it is computed, and the method of each claim (template
         ``turntable/templates/claims.md.j2``). A cell's text stays text: a ``|`` and a
         ``<`` that would open an HTML tag are escaped.
 
@@ -242,6 +258,7 @@ def to_markdown(report: Mapping[str, Any]) -> str:
         paper_value=_paper_value,
         decisive_value=decisive_value,
         values_and_bounds=values_and_bounds,
+        printed_values=printed_values,
     )
 
 

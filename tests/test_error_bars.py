@@ -1,0 +1,60 @@
+"""The error bars themselves: the coefficient's standard error against the spread of fits.
+
+Over `N_FILMS` SYNTHETIC films of white noise (`turntable.fit.simulate_film`, a fixed seed
+each), the z-scores (fitted - true) / SE are standard normal when the standard errors are
+right: their standard deviation is 1 +- 1 / sqrt(2 N) = 1 +- 0.041.  The test accepts
+1 +- `SPREAD_TOLERANCE` (2.4 of those spreads): a standard error 20 % too small makes it
+1.25, one 20 % too large 0.83, and both fail.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from turntable import film, fit
+
+#: Films of the coverage test, and the tolerance on the spread of their z-scores.
+N_FILMS = 300
+SPREAD_TOLERANCE = 0.1
+#: Two truths of the paper's model: (model, coefficient, position (m), velocity (m/s),
+#: spin (rad/s)).
+TRUTHS = [
+    ("slipping", 3.0, (0.05, 0.0), (0.0, 0.0), (0.0, 0.0)),
+    ("slipping", 0.4, (0.0, 0.06), (0.01, 0.0), (1.0, 0.0)),
+]
+#: A short film: 20 frames/s for 3 s (61 frames), 0.2 mm of white noise per coordinate.
+CAMERA = film.Camera(fps=20.0, noise=2e-4, duration=3.0)
+SETUP = film.Setup(radius=0.01, omega=film.rpm_to_omega(33.3), k=0.4)
+
+
+def z_scores() -> np.ndarray:
+    """(fitted - true) / SE of every film, the truths taken in turn."""
+    z = []
+    for i in range(N_FILMS):
+        model, c, position, velocity, spin = TRUTHS[i % len(TRUTHS)]
+        z0 = film.state_from_si(position, velocity, spin, SETUP)
+        data = fit.simulate_film(model, c, z0, SETUP, CAMERA, seed=i)
+        f = fit.fit_model(data, SETUP, model)
+        z.append((f.coefficient - c) / f.stderr)
+    return np.array(z)
+
+
+@pytest.fixture(scope="module")
+def z() -> np.ndarray:
+    return z_scores()
+
+
+def test_spread_of_z_scores_is_one(z: np.ndarray) -> None:
+    """The reported standard error is the spread of the fitted coefficients."""
+    spread = float(z.std(ddof=1))
+    assert abs(spread - 1.0) < SPREAD_TOLERANCE, spread
+
+
+def test_z_scores_are_centred_and_cover(z: np.ndarray) -> None:
+    """Mean 0 +- 3 / sqrt(N); within 2 SE in 95.45 % +- 3 sd of a binomial share."""
+    assert abs(z.mean()) < 3 / math.sqrt(N_FILMS), z.mean()
+    inside = float(np.mean(np.abs(z) < 2.0))
+    assert abs(inside - 0.9545) < 3 * math.sqrt(0.9545 * 0.0455 / N_FILMS), inside

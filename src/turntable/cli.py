@@ -322,6 +322,11 @@ def fit_command(args: argparse.Namespace) -> int:
     with warnings.catch_warnings(), np.errstate(all="ignore"):
         warnings.simplefilter("ignore", RuntimeWarning)
         result = fit.fit_film(data, setup, **options)
+        if tracked is not None:
+            from turntable.video.uncertainty import carry
+
+            measured = omega == abs(tracked.calibration.omega)
+            result, parts, notes = carry(tracked, setup, result, omega_measured=measured, **options)
         check = fit.consistency(data, setup, result, **options)
         out = finite_or_none(
             fit.result_json(result, setup, data, args.mass, source=args.data, check=check)
@@ -332,6 +337,8 @@ def fit_command(args: argparse.Namespace) -> int:
         out["video"] = finite_or_none(
             video_summary(tracked, given_omega=omega != abs(tracked.calibration.omega))
         )
+        out["video"]["stderr_parts"] = finite_or_none(parts)
+        out["warnings"] += notes
     _write_json(out)
     for message in out["warnings"]:
         _warn(message)

@@ -12,7 +12,8 @@ degrees, roll up to 5.  The scene families
   strip of tape (``colour``), a dark ball on a light platter with its shadow (``dark``), a
   specular ball crossing a printed label (``specular``), and a phone's video (``phone``: a
   main camera's barrel distortion after its own correction, k1 down to -0.02, a rolling
-  shutter, mains flicker, variable frame rate, grooves);
+  shutter, mains flicker, variable frame rate, grooves; ``phone_lens``: the same with a barrel
+  distortion moving the image's corners inward by up to 5 % and a readout of up to a frame);
 - rendered by it outside the guide: a mark as large as the ball (``big_mark``), a ball of
   nearly the platter's colour (``camouflage``);
 - rendered by MuJoCo (``mujoco``, `mujoco_scene.render_mujoco`), a renderer the project did
@@ -56,6 +57,7 @@ from turntable.config import validate
 from turntable.video.decode import VideoError
 from turntable.video.render import Scene, render_video
 from turntable.video.track import track_video
+from turntable.video.uncertainty import carry
 
 PLATTER = 0.15
 RPM = 100.0 / 3.0
@@ -63,6 +65,9 @@ RPM = 100.0 / 3.0
 NOISE = 1.5e-4
 #: Thresholds of a wrong answer: positions (rms, ball radii), Omega (relative).
 WRONG_RMS, WRONG_OMEGA = 0.25, 0.01
+#: A coefficient more than this many of its reported standard errors off is a confident wrong
+#: answer.
+WRONG_Z = 4.0
 GREYS = {"white": (240, 240, 235), "black": (25, 25, 28), "steel": (170, 172, 178)}
 COLOURS = [(200, 30, 30), (235, 120, 20), (30, 80, 200), (40, 160, 60), (230, 200, 40)]
 
@@ -135,6 +140,19 @@ def _phone(rng):
     }, 5.0
 
 
+#: The strongest barrel distortion of ``phone_lens``: it moves the corners of the image
+#: (1280x720, a 60-degree field of view: r^2 = 0.439 in focal lengths) inward by 5 %.
+PHONE_K1 = -0.05 / 0.439
+
+
+def _phone_lens(rng):
+    fields, duration = _phone(rng)
+    return fields | {
+        "lens_k1": float(rng.uniform(PHONE_K1, 0.0)),
+        "readout": float(rng.uniform(0.0, 1.0)),
+    }, duration
+
+
 def _big_mark(rng):
     return {"mark_radius": 1.0, "mark_shape": "disc"}, 5.0
 
@@ -177,6 +195,7 @@ FAMILIES = {
     "dark": (_dark, True, "turntable"),
     "specular": (_specular, True, "turntable"),
     "phone": (_phone, True, "turntable"),
+    "phone_lens": (_phone_lens, True, "turntable"),
     "big_mark": (_big_mark, False, "turntable"),
     "camouflage": (_camouflage, False, "turntable"),
     "mujoco": (_mujoco, True, "mujoco"),
@@ -302,14 +321,25 @@ def measure(truth: dict[str, Any], path: Path, truth_file: Path) -> dict[str, An
         "checks": {k: float(v["value"]) for k, v in track.checks.items()},
     }
     measured = film.Setup(setup.radius, abs(cal.omega), setup.k, (0.0, 0.0))
-    result = fit.fit_film(track.film, measured, fit_axis=True)
+    statistical = fit.fit_film(track.film, measured, fit_axis=True)
+    options = {"omega_measured": True, "fit_omega": False, "fit_axis": True}
+    result, parts, _ = carry(track, measured, statistical, **options)
     own = result.fits[truth["model"]]
+    stat = statistical.fits[truth["model"]].stderr
+    name = fit.COEFFICIENT[truth["model"]]
     c = truth["coefficient"]
+    z = float((own.coefficient - c) / own.stderr)
     return row | {
         "fitted": own.coefficient,
         "stderr": own.stderr,
-        "z": float((own.coefficient - c) / own.stderr),
-        "covered": bool(own.bound is None and abs(own.coefficient - c) < 2 * own.stderr),
+        "stderr_statistical": stat,
+        "stderr_calibration": parts[truth["model"]][f"{name}_stderr_calibration"],
+        "lens_measured": cal.lens.measured,
+        "z": z,
+        "z_statistical": float((own.coefficient - c) / stat),
+        "covered": bool(own.bound is None and abs(z) < 2),
+        "covered_statistical": bool(own.bound is None and abs(own.coefficient - c) < 2 * stat),
+        "confident_wrong_coefficient": bool(own.bound is None and abs(z) > WRONG_Z),
         "residual_over_noise": own.noise_ratio,
         "distinguishable": truth["distinct"],
         "selected": result.selected,
@@ -340,6 +370,14 @@ def summary(rows: list[dict[str, Any]]) -> dict[str, Any]:
         if right
         else None,
         "coverage_2se": stat(np.mean, "covered"),
+        "coverage_2se_statistical_only": stat(np.mean, "covered_statistical"),
+        "largest_abs_z": float(max(abs(r["z"]) for r in right)) if right else None,
+        "largest_abs_z_statistical_only": float(max(abs(r["z_statistical"]) for r in right))
+        if right
+        else None,
+        "confident_wrong_coefficient": sum(
+            r.get("confident_wrong_coefficient", False) for r in rows
+        ),
         "right_model_where_distinguishable": float(
             np.mean([r["selected"] == r["model"] for r in distinct])
         )
@@ -373,7 +411,8 @@ def run(per_family: int, workers: int, folder: Path, families: list[str]) -> dic
         rows.append(r)
         what = (
             f"rms {r['rms_error_radii']:.4f} R, Omega {100 * r['omega_relative_error']:+.3f} %, "
-            f"z {r['z']:+.2f}, {'WRONG ' * r['wrong']}tracked in {r['track_seconds']:.1f} s"
+            f"z {r['z']:+.2f} ({r['z_statistical']:+.2f} statistical), "
+            f"{'WRONG ' * r['wrong']}tracked in {r['track_seconds']:.1f} s"
             if r["tracked"]
             else f"refused: {r['refusal']}"
         )
@@ -387,6 +426,7 @@ def run(per_family: int, workers: int, folder: Path, families: list[str]) -> dic
             "position_rms_radii": 0.05,
             "omega_relative": 0.005,
             "coverage_2se": 0.9,
+            "largest_abs_z": WRONG_Z,
             "confident_wrong": 0,
             "track_seconds_2400_frames": 20.0,
         },
@@ -417,7 +457,11 @@ def main() -> None:
             f"{name}: {s['tracked']}/{s['videos']} tracked, {s['refused']} refused, "
             f"{s['confident_wrong']} confident wrong; rms median {s['position_rms_radii_median']} "
             f"max {s['position_rms_radii_max']} R; Omega max {s['omega_relative_error_max']}; "
-            f"coverage {s['coverage_2se']}; right model {s['right_model_where_distinguishable']} "
+            f"coverage {s['coverage_2se']} (statistical SE alone "
+            f"{s['coverage_2se_statistical_only']}), largest |z| {s['largest_abs_z']} "
+            f"({s['largest_abs_z_statistical_only']}), {s['confident_wrong_coefficient']} "
+            f"coefficients > {WRONG_Z:g} SE off; right model "
+            f"{s['right_model_where_distinguishable']} "
             f"of {s['distinguishable']}; 2400 frames in {s['track_seconds_2400_frames_max']} s"
         )
 

@@ -25,8 +25,10 @@ Each video is tracked as ``turntable track`` does (timed) and, if tracked, fitte
 status 0 whose positions are off by more than `WRONG_RMS` ball radii (rms) or whose Omega is
 off by more than `WRONG_OMEGA`.
 
-Run ``python benchmarks/video.py [--per-family 7] [--workers 2] [--keep DIR]`` (``--keep``:
-render into DIR and reuse the videos found there, rendered from the same draw); the result is
+Run ``python benchmarks/video.py [--per-family 7] [--workers 2] [--keep DIR] [--families F ...]
+[--fps F] [--size W H]`` (``--keep``: render into DIR and reuse the videos found there,
+rendered from the same draw; ``--fps``, ``--size``: every video at that frame rate and size,
+lighter to render, the coefficients drawn measurable at that rate); the result is
 merged into ``results/benchmarks.json`` under ``video``.
 """
 
@@ -397,11 +399,17 @@ def reliable_level() -> float:
     return config["fig8_measurability"]["reliable_relative_error"]
 
 
-def run(per_family: int, workers: int, folder: Path, families: list[str]) -> dict[str, Any]:
+def run(
+    per_family: int,
+    workers: int,
+    folder: Path,
+    families: list[str],
+    scene: dict[str, Any] | None = None,
+) -> dict[str, Any]:
     level = reliable_level()
     rng = np.random.default_rng(2026)
     count = {f: per_family if FAMILIES[f][1] else max(per_family // 2, 2) for f in families}
-    truths = [draw(rng, i, f, level) for f in families for i in range(count[f])]
+    truths = [draw(rng, i, f, level, scene=scene) for f in families for i in range(count[f])]
     paths = [folder / f"{t['family']}_{t['seed']}_SYNTHETIC.mp4" for t in truths]
     with ProcessPoolExecutor(workers) as pool:
         truth_files = list(pool.map(render, truths, paths))
@@ -443,11 +451,15 @@ def main() -> None:
     parser.add_argument("--families", nargs="+", choices=sorted(FAMILIES), default=list(FAMILIES))
     parser.add_argument("--workers", type=int, default=2, help="processes that render")
     parser.add_argument("--keep", type=Path, help="render into this folder, reuse its videos")
+    parser.add_argument("--fps", type=float, help="every video at this frame rate")
+    parser.add_argument("--size", type=int, nargs=2, metavar=("W", "H"), help="... this size")
     args = parser.parse_args()
+    scene = {"fps": args.fps} if args.fps else {}
+    scene |= {"size": tuple(args.size)} if args.size else {}
     with tempfile.TemporaryDirectory(prefix="turntable-video-") as tmp:
         folder = args.keep or Path(tmp)
         folder.mkdir(parents=True, exist_ok=True)
-        res = run(args.per_family, args.workers, folder, args.families)
+        res = run(args.per_family, args.workers, folder, args.families, scene)
     res["command"] = "python " + " ".join(["benchmarks/video.py", *sys.argv[1:]])
     merge_results(ROOT / "results/benchmarks.json", {"video": res})
     print()

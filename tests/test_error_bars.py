@@ -83,3 +83,21 @@ def test_the_linear_response_of_the_coefficient_is_that_of_a_refit(model: str) -
     for change, (other, setup) in zip(got, variants, strict=True):
         refit = math.log(fit.fit_model(other, setup, model, **options).coefficient) - base
         assert change == pytest.approx(refit, rel=0.05, abs=1e-6)
+
+
+def test_the_output_says_where_the_calibration_dominates() -> None:
+    """A warning names the calibration's largest part where it exceeds the statistical
+    standard error, and there is none where it does not."""
+    from turntable.video.uncertainty import CalibrationPart, dominance_warning
+
+    data = fit.simulate_film(
+        "slipping", 3.0, film.state_from_si((0.05, 0.0), (0, 0), (0, 0), SETUP), SETUP, CAMERA, 1
+    )
+    f = fit.fit_model(data, SETUP, "slipping")
+    small = CalibrationPart(0.5 * f.log_stderr, {"tilt": 0.5 * f.log_stderr, "readout": 0.0})
+    large = CalibrationPart(2.0 * f.log_stderr, {"tilt": 0.1, "lens_k1": 2.0 * f.log_stderr})
+    assert dominance_warning("slipping", f, small) is None
+    line = dominance_warning("slipping", f, large)
+    assert "dominates" in line
+    assert "lens k1" in line
+    assert "\n" not in line

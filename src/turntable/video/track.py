@@ -365,7 +365,10 @@ def calibration_json(track: Track, ball_radius: float, platter_radius: float) ->
                 "(u, v) before the lens's distortion: seen at (u, v) + k1 r^2 ((u, v) - centre), "
                 "r the distance from the image's centre over focal_px, k1 = lens_k1"
             ),
-            "stderr": "from the least-squares fit of the camera to the rim and the mark",
+            "stderr": (
+                "from the least-squares fit of the camera to the rim and the mark, with the "
+                "uncertainty of the lens's k1 (lens.k1_used_stderr) and what follows from it"
+            ),
         },
     }
 

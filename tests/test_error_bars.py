@@ -95,7 +95,9 @@ def test_the_output_says_where_the_calibration_dominates() -> None:
     )
     f = fit.fit_model(data, SETUP, "slipping")
     small = CalibrationPart(0.5 * f.log_stderr, {"tilt": 0.5 * f.log_stderr, "readout": 0.0})
-    large = CalibrationPart(2.0 * f.log_stderr, {"tilt": 0.1, "lens_k1": 2.0 * f.log_stderr})
+    large = CalibrationPart(
+        2.0 * f.log_stderr, {"tilt": 0.1 * f.log_stderr, "lens_k1": 2.0 * f.log_stderr}
+    )
     assert dominance_warning("slipping", f, small) is None
     line = dominance_warning("slipping", f, large)
     assert "dominates" in line

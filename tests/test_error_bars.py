@@ -67,7 +67,7 @@ def test_the_linear_response_of_the_coefficient_is_that_of_a_refit(model: str) -
     positions are stretched by 0.2 % with an Omega 0.05 % off, and one whose times are
     delayed by up to 1 ms in proportion to y (a rolling shutter), move ln c as a new fit
     does, within 5 % of the change."""
-    from turntable.fit.lsq import coefficient_response
+    from turntable.fit.response import coefficient_response
 
     c = 3.0 if model == "slipping" else 0.05
     z0 = film.state_from_si((0.05, 0.0), (0.0, 0.0), (0.0, 0.0), SETUP)

@@ -7,7 +7,7 @@ of the calibration.  A fit's standard error sees only the scatter of the positio
 model; an error of the camera moves every position alike and is not in it.  The coefficient's
 part from the calibration is propagated linearly: G_j = d ln c / d theta_j, by central
 differences of the film made with the calibration's parameter j moved by +-1 of its standard
-errors (`turntable.fit.lsq.coefficient_response`), and se_cal(ln c) = sqrt(G C G^T).  The
+errors (`turntable.fit.response.coefficient_response`), and se_cal(ln c) = sqrt(G C G^T).  The
 coefficient's standard error is then sqrt(se_stat^2 + se_cal^2); where se_cal exceeds se_stat
 (`DOMINANT`), the calibration limits the measurement, and the output says so.
 """
@@ -22,7 +22,7 @@ from numpy.typing import NDArray
 
 from turntable.film import Film, Setup
 from turntable.fit import COEFFICIENT, FilmFit, ModelFit
-from turntable.fit.lsq import coefficient_response
+from turntable.fit.response import coefficient_response
 from turntable.video import camera
 from turntable.video.calibrate import _At, camera_of
 

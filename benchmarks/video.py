@@ -12,7 +12,8 @@ degrees, roll up to 5.  The scene families
   strip of tape (``colour``), a dark ball on a light platter with its shadow (``dark``), a
   specular ball crossing a printed label (``specular``), and a phone's video (``phone``: a
   main camera's barrel distortion after its own correction, k1 down to -0.02, a rolling
-  shutter, mains flicker, variable frame rate, grooves);
+  shutter, mains flicker, variable frame rate, grooves; ``phone_lens``: the same with a barrel
+  distortion moving the image's corners inward by up to 5 % and a readout of up to a frame);
 - rendered by it outside the guide: a mark as large as the ball (``big_mark``), a ball of
   nearly the platter's colour (``camouflage``);
 - rendered by MuJoCo (``mujoco``, `mujoco_scene.render_mujoco`), a renderer the project did
@@ -24,8 +25,10 @@ Each video is tracked as ``turntable track`` does (timed) and, if tracked, fitte
 status 0 whose positions are off by more than `WRONG_RMS` ball radii (rms) or whose Omega is
 off by more than `WRONG_OMEGA`.
 
-Run ``python benchmarks/video.py [--per-family 7] [--workers 2] [--keep DIR]`` (``--keep``:
-render into DIR and reuse the videos found there, rendered from the same draw); the result is
+Run ``python benchmarks/video.py [--per-family 7] [--workers 2] [--keep DIR] [--families F ...]
+[--fps F] [--size W H]`` (``--keep``: render into DIR and reuse the videos found there,
+rendered from the same draw; ``--fps``, ``--size``: every video at that frame rate and size,
+lighter to render, the coefficients drawn measurable at that rate); the result is
 merged into ``results/benchmarks.json`` under ``video``.
 """
 
@@ -52,6 +55,7 @@ from turntable.config import validate
 from turntable.video.decode import VideoError
 from turntable.video.render import Scene, render_video
 from turntable.video.track import track_video
+from turntable.video.uncertainty import carry
 
 PLATTER = 0.15
 RPM = 100.0 / 3.0
@@ -59,6 +63,9 @@ RPM = 100.0 / 3.0
 NOISE = 1.5e-4
 #: Thresholds of a wrong answer: positions (rms, ball radii), Omega (relative).
 WRONG_RMS, WRONG_OMEGA = 0.25, 0.01
+#: A coefficient more than this many of its reported standard errors off is a confident wrong
+#: answer.
+WRONG_Z = 4.0
 GREYS = {"white": (240, 240, 235), "black": (25, 25, 28), "steel": (170, 172, 178)}
 COLOURS = [(200, 30, 30), (235, 120, 20), (30, 80, 200), (40, 160, 60), (230, 200, 40)]
 
@@ -131,6 +138,19 @@ def _phone(rng):
     }, 5.0
 
 
+#: The strongest barrel distortion of ``phone_lens``: it moves the corners of the image
+#: (1280x720, a 60-degree field of view: r^2 = 0.439 in focal lengths) inward by 5 %.
+PHONE_K1 = -0.05 / 0.439
+
+
+def _phone_lens(rng):
+    fields, duration = _phone(rng)
+    return fields | {
+        "lens_k1": float(rng.uniform(PHONE_K1, 0.0)),
+        "readout": float(rng.uniform(0.0, 1.0)),
+    }, duration
+
+
 def _big_mark(rng):
     return {"mark_radius": 1.0, "mark_shape": "disc"}, 5.0
 
@@ -173,6 +193,7 @@ FAMILIES = {
     "dark": (_dark, True, "turntable"),
     "specular": (_specular, True, "turntable"),
     "phone": (_phone, True, "turntable"),
+    "phone_lens": (_phone_lens, True, "turntable"),
     "big_mark": (_big_mark, False, "turntable"),
     "camouflage": (_camouflage, False, "turntable"),
     "mujoco": (_mujoco, True, "mujoco"),
@@ -298,14 +319,25 @@ def measure(truth: dict[str, Any], path: Path, truth_file: Path) -> dict[str, An
         "checks": {k: float(v["value"]) for k, v in track.checks.items()},
     }
     measured = film.Setup(setup.radius, abs(cal.omega), setup.k, (0.0, 0.0))
-    result = fit.fit_film(track.film, measured, fit_axis=True)
+    statistical = fit.fit_film(track.film, measured, fit_axis=True)
+    options = {"omega_measured": True, "fit_omega": False, "fit_axis": True}
+    result, parts, _ = carry(track, measured, statistical, **options)
     own = result.fits[truth["model"]]
+    stat = statistical.fits[truth["model"]].stderr
+    name = fit.COEFFICIENT[truth["model"]]
     c = truth["coefficient"]
+    z = float((own.coefficient - c) / own.stderr)
     return row | {
         "fitted": own.coefficient,
         "stderr": own.stderr,
-        "z": float((own.coefficient - c) / own.stderr),
-        "covered": bool(own.bound is None and abs(own.coefficient - c) < 2 * own.stderr),
+        "stderr_statistical": stat,
+        "stderr_calibration": parts[truth["model"]][f"{name}_stderr_calibration"],
+        "lens_measured": cal.lens.measured,
+        "z": z,
+        "z_statistical": float((own.coefficient - c) / stat),
+        "covered": bool(own.bound is None and abs(z) < 2),
+        "covered_statistical": bool(own.bound is None and abs(own.coefficient - c) < 2 * stat),
+        "confident_wrong_coefficient": bool(own.bound is None and abs(z) > WRONG_Z),
         "residual_over_noise": own.noise_ratio,
         "distinguishable": truth["distinct"],
         "selected": result.selected,
@@ -336,6 +368,14 @@ def summary(rows: list[dict[str, Any]]) -> dict[str, Any]:
         if right
         else None,
         "coverage_2se": stat(np.mean, "covered"),
+        "coverage_2se_statistical_only": stat(np.mean, "covered_statistical"),
+        "largest_abs_z": float(max(abs(r["z"]) for r in right)) if right else None,
+        "largest_abs_z_statistical_only": float(max(abs(r["z_statistical"]) for r in right))
+        if right
+        else None,
+        "confident_wrong_coefficient": sum(
+            r.get("confident_wrong_coefficient", False) for r in rows
+        ),
         "right_model_where_distinguishable": float(
             np.mean([r["selected"] == r["model"] for r in distinct])
         )
@@ -355,11 +395,17 @@ def reliable_level() -> float:
     return config["fig8_measurability"]["reliable_relative_error"]
 
 
-def run(per_family: int, workers: int, folder: Path, families: list[str]) -> dict[str, Any]:
+def run(
+    per_family: int,
+    workers: int,
+    folder: Path,
+    families: list[str],
+    scene: dict[str, Any] | None = None,
+) -> dict[str, Any]:
     level = reliable_level()
     rng = np.random.default_rng(2026)
     count = {f: per_family if FAMILIES[f][1] else max(per_family // 2, 2) for f in families}
-    truths = [draw(rng, i, f, level) for f in families for i in range(count[f])]
+    truths = [draw(rng, i, f, level, scene=scene) for f in families for i in range(count[f])]
     paths = [folder / f"{t['family']}_{t['seed']}_SYNTHETIC.mp4" for t in truths]
     with ProcessPoolExecutor(workers) as pool:
         truth_files = list(pool.map(render, truths, paths))
@@ -369,7 +415,8 @@ def run(per_family: int, workers: int, folder: Path, families: list[str]) -> dic
         rows.append(r)
         what = (
             f"rms {r['rms_error_radii']:.4f} R, Omega {100 * r['omega_relative_error']:+.3f} %, "
-            f"z {r['z']:+.2f}, {'WRONG ' * r['wrong']}tracked in {r['track_seconds']:.1f} s"
+            f"z {r['z']:+.2f} ({r['z_statistical']:+.2f} statistical), "
+            f"{'WRONG ' * r['wrong']}tracked in {r['track_seconds']:.1f} s"
             if r["tracked"]
             else f"refused: {r['refusal']}"
         )
@@ -383,6 +430,7 @@ def run(per_family: int, workers: int, folder: Path, families: list[str]) -> dic
             "position_rms_radii": 0.05,
             "omega_relative": 0.005,
             "coverage_2se": 0.9,
+            "largest_abs_z": WRONG_Z,
             "confident_wrong": 0,
             "track_seconds_2400_frames": 20.0,
         },
@@ -399,11 +447,15 @@ def main() -> None:
     parser.add_argument("--families", nargs="+", choices=sorted(FAMILIES), default=list(FAMILIES))
     parser.add_argument("--workers", type=int, default=2, help="processes that render")
     parser.add_argument("--keep", type=Path, help="render into this folder, reuse its videos")
+    parser.add_argument("--fps", type=float, help="every video at this frame rate")
+    parser.add_argument("--size", type=int, nargs=2, metavar=("W", "H"), help="... this size")
     args = parser.parse_args()
+    scene = {"fps": args.fps} if args.fps else {}
+    scene |= {"size": tuple(args.size)} if args.size else {}
     with tempfile.TemporaryDirectory(prefix="turntable-video-") as tmp:
         folder = args.keep or Path(tmp)
         folder.mkdir(parents=True, exist_ok=True)
-        res = run(args.per_family, args.workers, folder, args.families)
+        res = run(args.per_family, args.workers, folder, args.families, scene)
     res["command"] = "python " + " ".join(["benchmarks/video.py", *sys.argv[1:]])
     merge_results(ROOT / "results/benchmarks.json", {"video": res})
     print()
@@ -413,7 +465,11 @@ def main() -> None:
             f"{name}: {s['tracked']}/{s['videos']} tracked, {s['refused']} refused, "
             f"{s['confident_wrong']} confident wrong; rms median {s['position_rms_radii_median']} "
             f"max {s['position_rms_radii_max']} R; Omega max {s['omega_relative_error_max']}; "
-            f"coverage {s['coverage_2se']}; right model {s['right_model_where_distinguishable']} "
+            f"coverage {s['coverage_2se']} (statistical SE alone "
+            f"{s['coverage_2se_statistical_only']}), largest |z| {s['largest_abs_z']} "
+            f"({s['largest_abs_z_statistical_only']}), {s['confident_wrong_coefficient']} "
+            f"coefficients > {WRONG_Z:g} SE off; right model "
+            f"{s['right_model_where_distinguishable']} "
             f"of {s['distinguishable']}; 2400 frames in {s['track_seconds_2400_frames_max']} s"
         )
 

@@ -390,3 +390,19 @@ def test_a_camera_straight_above_a_mujoco_render_is_at_its_distance() -> None:
     cal = calibrate(rim, fit_ellipse(rim), data["mark_t"], data["mark_uv"].astype(float), size,
                     float(data["platter_radius"]), int(data["rim_frames"]))  # fmt: skip
     assert abs(cal.derived["distance_m"] / 0.362 - 1) < 0.3
+
+
+@pytest.mark.parametrize(("k1", "noise_px"), [(-0.02, 1.0), (-0.05, 2.0), (0.0, 1.0)])
+def test_a_lens_the_mark_cannot_measure_is_not_known_and_says_so(k1: float, noise_px: float):
+    """The mark's images with a pixel or two of noise: k1 is not measured to `LENS_Z`, the
+    camera is a pinhole's, and the standard error of its k1 = 0 (sqrt(k1^2 + se^2) of the
+    mark's measurement) covers the true k1 within 2 of it, instead of claiming 0 exactly."""
+    from turntable.video.calibrate import calibrate
+    from turntable.video.camera import Pose
+
+    true = Pose(1108.0, math.radians(32.0), math.radians(3.0), (0.0, -0.005), 0.44, (1280, 720), k1)
+    cal = calibrate(*_rim_and_mark(true, 0.0, noise_px, seed=7))
+    assert not cal.lens.measured
+    assert cal.derived["lens_k1"] == 0.0
+    assert abs(k1) < 2 * cal.stderr["lens_k1"]
+    assert cal.stderr["lens_k1"] == pytest.approx(math.hypot(cal.lens.k1, cal.lens.k1_stderr))

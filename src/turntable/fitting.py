@@ -230,6 +230,11 @@ def fitted_film(
     with warnings.catch_warnings(), np.errstate(all="ignore"):
         warnings.simplefilter("ignore", RuntimeWarning)
         result = fit.fit_film(data, setup, **options)
+        if tracked is not None:
+            from turntable.video.uncertainty import carry
+
+            measured = omega == abs(tracked.calibration.omega)
+            result, parts, notes = carry(tracked, setup, result, omega_measured=measured, **options)
         if progress is not None:
             progress("fitting", 1, 2)
         check = fit.consistency(data, setup, result, **options)
@@ -242,4 +247,6 @@ def fitted_film(
         out["video"] = finite_or_none(
             video_summary(tracked, given_omega=omega != abs(tracked.calibration.omega))
         )
+        out["video"]["stderr_parts"] = finite_or_none(parts)
+        out["warnings"] += notes
     return out, data

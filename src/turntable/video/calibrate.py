@@ -20,7 +20,9 @@ track alone: thousands of images, over several turns, of a point turning uniform
 circle of the platter's plane, which a pinhole sees on an ellipse and a bending lens does
 not.  The rim's edge would pass its own bias to k1: up to a pixel on the near side, from the
 platter's side and its shadow.  The camera is fitted again with that k1 where the mark
-measures it to a tenth (``LENS_Z``); elsewhere the lens is a pinhole's.
+measures it to a tenth (``LENS_Z``); elsewhere the lens is a pinhole's, with k1 known only
+to within sqrt(k1^2 + se^2) of 0 (k1 and se as the mark measures them), which the standard
+errors of the camera and the covariance of the parameters carry (`Lens`).
 """
 
 from __future__ import annotations
@@ -52,13 +54,57 @@ PRIOR_READOUT = 2.0
 RIM_BIAS = 0.001
 #: The lens's k1 is kept if the mark measures it to a tenth (`LENS_Z` standard errors from 0,
 #: three times the 3.3 to which the mark's own small biases put the k1 of the benchmark's
-#: distortion-free lenses) and within +-`MAX_K1` (a phone's main camera; a wide-angle or
-#: fisheye lens bends more than this model describes).
-LENS_Z, MAX_K1 = 10.0, 0.1
+#: distortion-free lenses) and within +-`MAX_K1` (a phone's main camera, whose barrel
+#: distortion moves the corners of a 60-degree field of view inward by up to 5 %: k1 = -0.114;
+#: a wide-angle or fisheye lens bends more than this model describes).
+LENS_Z, MAX_K1 = 10.0, 0.15
 #: Rows are read from the top down within this many frame intervals: where the readout is
 #: hard to tell from the camera's tilt (a camera looking nearly straight down), the bounds
 #: keep it physical.
 MAX_READOUT = 1.2
+
+
+class _At:
+    """Where each parameter sits in the vector theta of a calibration.
+
+    theta = (ln f, tilt, roll, look-at x, look-at y, ln distance: the camera's six;
+    ln r_m, phi0, Omega: the mark's circle and the platter's rate; the readout time in frame
+    intervals; the lens's k1).  The camera alone (`_rim_fit`) is the first `CAMERA`.
+    """
+
+    LOG_FOCAL, TILT, ROLL, LOOK_X, LOOK_Y, LOG_DISTANCE = range(6)
+    LOG_MARK_RADIUS, PHASE, OMEGA, READOUT, K1 = range(6, 11)
+    CAMERA = 6
+    SIZE = 11
+    LOOK = slice(LOOK_X, LOOK_Y + 1)
+    #: Everything but k1: what the Jacobian of a fit with k1 held covers.
+    HELD_K1 = slice(0, K1)
+
+
+class Lens(NamedTuple):
+    """What the mark's track says of the lens's radial distortion.
+
+    Attributes
+    ----------
+    measured : bool
+        Whether k1 was measured (to `LENS_Z` standard errors, within +-`MAX_K1`) and kept;
+        otherwise the camera is a pinhole's, and k1 is 0 known to within ``spread``.
+    k1, k1_stderr : float
+        k1 as the mark alone measures it, and its standard error.
+    shift : numpy.ndarray
+        The calibration's parameters moved by one standard error of k1 (the others
+        following it): sqrt(k1^2 + k1_stderr^2) if not measured, k1_stderr if measured.
+    """
+
+    measured: bool
+    k1: float
+    k1_stderr: float
+    shift: NDArray[np.float64]
+
+    @property
+    def spread(self) -> float:
+        """The standard error of the k1 that the camera uses."""
+        return float(abs(self.shift[_At.K1]))
 
 
 class Calibration(NamedTuple):
@@ -74,7 +120,8 @@ class Calibration(NamedTuple):
     derived, stderr : dict
         tilt_deg, roll_deg, axis_u_px, axis_v_px, m_per_px (at the axis, geometric mean of
         the two directions), focal_px, distance_m, lens_k1 (the lens's radial distortion: 0
-        if the mark's track does not tell it from 0), and their standard errors.
+        if the mark's track does not tell it from 0, its standard error then
+        sqrt(k1^2 + se^2) of the mark's measurement), and their standard errors.
     rim_rms_px, mark_rms_px : float
         Rms distance of the rim points and of the mark's images from the fitted camera.
     mark_lag1 : float
@@ -83,6 +130,13 @@ class Calibration(NamedTuple):
     readout, readout_stderr : float
         A rolling shutter's readout time, s: row v of a frame is seen ``readout * v / height``
         after the frame's time (0 for a global shutter).
+    lens : Lens
+        The lens's k1 as the mark measures it, and whether the camera uses it.
+    parameters, covariance : numpy.ndarray
+        The fitted parameters (`_At`) and their covariance, the uncertainty of k1 and what
+        follows from it included.
+    interval : float
+        The frame interval, s (the unit of the readout time among the parameters).
     """
 
     pose: Pose
@@ -96,6 +150,10 @@ class Calibration(NamedTuple):
     mark_lag1: float
     readout: float = 0.0
     readout_stderr: float = 0.0
+    lens: Lens | None = None
+    parameters: NDArray[np.float64] | None = None
+    covariance: NDArray[np.float64] | None = None
+    interval: float = 1.0
 
     def times(self, t: NDArray[np.float64], v: NDArray[np.float64]) -> NDArray[np.float64]:
         """When image points at rows ``v`` of frames at times ``t`` were seen."""
@@ -103,9 +161,16 @@ class Calibration(NamedTuple):
 
 
 def _pose(theta: NDArray, size: tuple[int, int]) -> Pose:
-    k1 = float(theta[10]) if len(theta) > 10 else 0.0
+    """The camera of a parameter vector: the camera's six, and k1 if it has one (else 0)."""
+    k1 = float(theta[_At.K1]) if len(theta) > _At.K1 else 0.0
     return Pose(
-        math.exp(theta[0]), theta[1], theta[2], (theta[3], theta[4]), math.exp(theta[5]), size, k1
+        math.exp(theta[_At.LOG_FOCAL]),
+        theta[_At.TILT],
+        theta[_At.ROLL],
+        (theta[_At.LOOK_X], theta[_At.LOOK_Y]),
+        math.exp(theta[_At.LOG_DISTANCE]),
+        size,
+        k1,
     )
 
 
@@ -121,15 +186,15 @@ def _derived(theta: NDArray, size: tuple[int, int]) -> NDArray[np.float64]:
     scale = math.sqrt(abs(np.linalg.det(np.column_stack(d))))
     return np.array(
         [
-            math.degrees(theta[1]),
-            math.degrees(theta[2]),
+            math.degrees(theta[_At.TILT]),
+            math.degrees(theta[_At.ROLL]),
             axis[0],
             axis[1],
             scale,
-            math.exp(theta[0]),
-            math.exp(theta[5]),
-            theta[10] if len(theta) > 10 else 0.0,
-            theta[8] if len(theta) > 8 else math.nan,
+            math.exp(theta[_At.LOG_FOCAL]),
+            math.exp(theta[_At.LOG_DISTANCE]),
+            theta[_At.K1] if len(theta) > _At.K1 else 0.0,
+            theta[_At.OMEGA] if len(theta) > _At.OMEGA else math.nan,
         ]
     )
 
@@ -162,8 +227,9 @@ class _Problem:
         return (np.hypot(q[:, 0], q[:, 1]) - self.p) * self.px_per_m / self.sigma_rim
 
     def mark(self, theta: NDArray) -> NDArray:
-        ang = theta[7] + theta[8] * (self.mark_t + theta[9] * self.interval * self.row)
-        r = math.exp(theta[6])
+        seen = self.mark_t + theta[_At.READOUT] * self.interval * self.row
+        ang = theta[_At.PHASE] + theta[_At.OMEGA] * seen
+        r = math.exp(theta[_At.LOG_MARK_RADIUS])
         pred = camera.project(
             _pose(theta, self.size), r * np.column_stack([np.cos(ang), np.sin(ang)])
         )
@@ -172,18 +238,25 @@ class _Problem:
     def priors(self, theta: NDArray) -> NDArray:
         return np.array(
             [
-                (theta[0] - self.log_f0) / self.prior_log_focal,
-                (theta[2] - self.roll0) / PRIOR_ROLL,
-                theta[9] / PRIOR_READOUT if len(theta) > 9 else 0.0,
+                (theta[_At.LOG_FOCAL] - self.log_f0) / self.prior_log_focal,
+                (theta[_At.ROLL] - self.roll0) / PRIOR_ROLL,
+                theta[_At.READOUT] / PRIOR_READOUT if len(theta) > _At.READOUT else 0.0,
             ]
         )
 
     def all(self, theta: NDArray) -> NDArray:
         return np.concatenate([self.rim(theta), self.mark(theta), self.priors(theta)])
 
-    def rim_only(self, theta6: NDArray) -> NDArray:
-        theta = np.r_[theta6, 0.0, 0.0, 0.0, 0.0, self.k1]
-        return np.concatenate([self.rim(theta), self.priors(theta)])
+    def rim_only(self, camera6: NDArray) -> NDArray:
+        return np.concatenate([self.rim(self.with_camera(camera6)), self.priors(camera6)])
+
+    def with_camera(self, camera6: NDArray) -> NDArray:
+        """The full parameter vector of the camera's six: the mark's and the readout's 0, k1
+        held."""
+        theta = np.zeros(_At.SIZE)
+        theta[: _At.CAMERA] = camera6
+        theta[_At.K1] = self.k1
+        return theta
 
 
 def _lag1(e: NDArray) -> float:
@@ -196,10 +269,12 @@ def _rim_fit(prob: _Problem, b0: float, roll0: float) -> NDArray:
     """The camera's six parameters from the rim alone."""
     size, rim, platter_radius = prob.size, prob.ellipse, prob.p
     f0 = float(size[0])
-    theta = np.array([math.log(f0), b0, roll0, 0.0, 0.0, math.log(f0 * platter_radius / rim.a)])
+    theta = np.zeros(_At.CAMERA)
+    theta[_At.LOG_FOCAL], theta[_At.TILT], theta[_At.ROLL] = math.log(f0), b0, roll0
+    theta[_At.LOG_DISTANCE] = math.log(f0 * platter_radius / rim.a)
     for _ in range(2):  # the look-at point that puts the axis at the ellipse's centre
         q = camera.back_project(_pose(theta, size), np.array(rim.centre))
-        theta[3:5] -= q
+        theta[_At.LOOK] -= q
     return least_squares(prob.rim_only, theta, method="lm", x_scale="jac").x
 
 
@@ -212,22 +287,20 @@ def rim_camera(
     roll0 = (-rim.angle + math.pi) % (2 * math.pi) - math.pi
     prob = _Problem(rim_pts, np.zeros(0), np.zeros((0, 2)), size, platter_radius, rim, roll0, 1)
     prob.prior_log_focal = RIM_PRIOR_LOG_FOCAL
-    theta6 = _rim_fit(prob, math.acos(min(rim.b / rim.a, 1.0)), roll0)
-    return _pose(theta6, size)
+    return _pose(_rim_fit(prob, math.acos(min(rim.b / rim.a, 1.0)), roll0), size)
 
 
 def _fit(prob: _Problem, b0: float, roll0: float) -> tuple[NDArray, NDArray]:
     """The camera from the rim alone, then with the mark, each kind of point weighed by its
     own scatter, the lens's k1 held at ``prob.k1``; returns the parameters and the Jacobian."""
     size = prob.size
-    theta6 = _rim_fit(prob, b0, roll0)
+    theta = prob.with_camera(_rim_fit(prob, b0, roll0))
     # start of the mark's circle from its images seen through the rim-only camera
-    q = camera.back_project(_pose(np.r_[theta6, 0, 0, 0, 0, prob.k1], size), prob.mark_uv)
+    q = camera.back_project(_pose(theta, size), prob.mark_uv)
     ang = np.unwrap(np.arctan2(q[:, 1], q[:, 0]))
     slope, phase = np.polyfit(prob.mark_t, ang, 1)
-    theta = np.r_[
-        theta6, math.log(np.median(np.hypot(q[:, 0], q[:, 1]))), phase, slope, 0.0, prob.k1
-    ]
+    theta[_At.LOG_MARK_RADIUS] = math.log(np.median(np.hypot(q[:, 0], q[:, 1])))
+    theta[_At.PHASE], theta[_At.OMEGA] = phase, slope
     for _ in range(2):
         theta = _solve(prob.all, theta)[0]
         # the rim seen on several frames is one edge: its points count as those of one frame,
@@ -243,17 +316,17 @@ def _fit(prob: _Problem, b0: float, roll0: float) -> tuple[NDArray, NDArray]:
     return _solve(prob.all, theta)
 
 
-def _solve(fun, theta: NDArray, held: tuple[int, ...] = (10,)) -> tuple[NDArray, NDArray]:
+def _solve(fun, theta: NDArray, held: tuple[int, ...] = (_At.K1,)) -> tuple[NDArray, NDArray]:
     """Least squares of the residuals ``fun(theta)`` over the parameters but ``held``, the
     readout between 0 and `MAX_READOUT` frame intervals, k1 within +-`MAX_K1`; returns the
     parameters and the Jacobian with respect to the free ones."""
     free = np.ones(theta.size, bool)
     free[list(held)] = False
     lo, hi = np.full(theta.size, -np.inf), np.full(theta.size, np.inf)
-    lo[9], hi[9] = 0.0, MAX_READOUT
-    lo[10], hi[10] = -MAX_K1, MAX_K1
+    lo[_At.READOUT], hi[_At.READOUT] = 0.0, MAX_READOUT
+    lo[_At.K1], hi[_At.K1] = -MAX_K1, MAX_K1
     theta = theta.copy()
-    theta[9] = min(max(theta[9], 1e-9), MAX_READOUT - 1e-9)
+    theta[_At.READOUT] = min(max(theta[_At.READOUT], 1e-9), MAX_READOUT - 1e-9)
 
     def residuals(x: NDArray) -> NDArray:
         t = theta.copy()
@@ -274,14 +347,14 @@ def _lens(prob: _Problem, theta: NDArray) -> tuple[float, float]:
     def residuals(t: NDArray) -> NDArray:
         return np.concatenate([prob.mark(t), prob.priors(t)])
 
-    theta, jac = _solve(residuals, theta, held=(6,))
+    theta, jac = _solve(residuals, theta, held=(_At.LOG_MARK_RADIUS,))
     res = prob.mark(theta).reshape(-1, 2) * prob.sigma_mark
     scale = max(float(np.sqrt(np.mean(res**2))), 1e-3) / prob.sigma_mark
     cov = np.linalg.pinv(jac.T @ jac) * scale**2
     r1 = _lag1(res)
     if r1 > 0:
         cov *= (1 + r1) / (1 - r1)
-    return float(theta[10]), float(math.sqrt(max(cov[-1, -1], 0.0)))
+    return float(theta[_At.K1]), float(math.sqrt(max(cov[-1, -1], 0.0)))
 
 
 def _best(args: tuple, k1: float) -> tuple[NDArray, NDArray, _Problem]:
@@ -336,18 +409,56 @@ def calibrate(
     lens = 0 < LENS_Z * k1_se <= abs(k1) < MAX_K1 * (1 - 1e-6)
     if lens:
         theta, jac, prob = _best(args, k1)
-    cov = np.zeros((theta.size, theta.size))
-    cov[:10, :10] = np.linalg.pinv(jac.T @ jac)
+    # a lens not measured to LENS_Z is a pinhole's, with k1 known to its distance from 0
+    k1_spread = k1_se if lens else math.hypot(k1, k1_se)
     mark_res = prob.mark(theta).reshape(-1, 2) * prob.sigma_mark
     r1 = _lag1(mark_res)
+    k1_shift = k1_spread * _follows_k1(prob, theta, jac)
+    cov = _covariance(jac, r1, k1_shift)
+    g0 = _derived(theta, size)
+    grad = _derived_gradient(theta, size)
+    se = np.sqrt(np.maximum(np.einsum("ij,jk,ik->i", grad, cov, grad), 0.0))
+    return Calibration(
+        pose=_pose(theta, size),
+        omega=float(theta[_At.OMEGA]),
+        omega_stderr=float(math.sqrt(max(cov[_At.OMEGA, _At.OMEGA], 0.0))),
+        mark_radius=float(math.exp(theta[_At.LOG_MARK_RADIUS])),
+        derived={k: float(v) for k, v in zip(_DERIVED, g0, strict=False)},
+        stderr={k: float(v) for k, v in zip(_DERIVED, se, strict=False)},
+        rim_rms_px=float(np.sqrt(np.mean((prob.rim(theta) * prob.sigma_rim) ** 2))),
+        mark_rms_px=float(np.sqrt(np.mean(mark_res**2))),
+        mark_lag1=r1,
+        readout=float(theta[_At.READOUT] * prob.interval),
+        readout_stderr=float(math.sqrt(max(cov[_At.READOUT, _At.READOUT], 0.0)) * prob.interval),
+        lens=Lens(lens, k1, k1_se, k1_shift),
+        parameters=theta,
+        covariance=cov,
+        interval=prob.interval,
+    )
+
+
+def _follows_k1(prob: _Problem, theta: NDArray, jac: NDArray) -> NDArray:
+    """d theta / d k1: how the fitted parameters follow a change of the held k1 (1 in k1)."""
+    e = np.zeros_like(theta)
+    e[_At.K1] = 1e-6
+    change = prob.all(theta + e) - prob.all(theta - e)
+    shift = -np.linalg.pinv(jac.T @ jac) @ jac.T @ change
+    return np.r_[shift / 2e-6, 1.0]
+
+
+def _covariance(jac: NDArray, r1: float, k1_shift: NDArray) -> NDArray:
+    """The parameters' covariance: the fit's (k1 held), widened by sqrt((1 + r) / (1 - r))
+    for the mark's lag-1 autocorrelation r > 0, plus the shift of all of them with k1 by its
+    standard error (``k1_shift``)."""
+    cov = np.zeros((_At.SIZE, _At.SIZE))
+    cov[_At.HELD_K1, _At.HELD_K1] = np.linalg.pinv(jac.T @ jac)
     if r1 > 0:
         cov *= (1 + r1) / (1 - r1)
-    if lens:  # the parameters follow k1, which the mark alone knows to within k1_se
-        e = np.zeros_like(theta)
-        e[10] = 1e-6
-        shift = -np.linalg.pinv(jac.T @ jac) @ jac.T @ (prob.all(theta + e) - prob.all(theta - e))
-        g = np.r_[shift / 2e-6, 1.0]
-        cov += k1_se**2 * np.outer(g, g)
+    return cov + np.outer(k1_shift, k1_shift)
+
+
+def _derived_gradient(theta: NDArray, size: tuple[int, int]) -> NDArray:
+    """d `_derived` / d theta by central differences."""
     g0 = _derived(theta, size)
     grad = np.empty((g0.size, theta.size))
     for j in range(theta.size):
@@ -355,17 +466,14 @@ def calibrate(
         e = np.zeros_like(theta)
         e[j] = step
         grad[:, j] = (_derived(theta + e, size) - _derived(theta - e, size)) / (2 * step)
-    se = np.sqrt(np.maximum(np.einsum("ij,jk,ik->i", grad, cov, grad), 0.0))
-    return Calibration(
-        pose=_pose(theta, size),
-        omega=float(theta[8]),
-        omega_stderr=float(math.sqrt(max(cov[8, 8], 0.0))),
-        mark_radius=float(math.exp(theta[6])),
-        derived={k: float(v) for k, v in zip(_DERIVED, g0, strict=False)},
-        stderr={k: float(v) for k, v in zip(_DERIVED, se, strict=False)},
-        rim_rms_px=float(np.sqrt(np.mean((prob.rim(theta) * prob.sigma_rim) ** 2))),
-        mark_rms_px=float(np.sqrt(np.mean(mark_res**2))),
-        mark_lag1=r1,
-        readout=float(theta[9] * prob.interval),
-        readout_stderr=float(math.sqrt(max(cov[9, 9], 0.0)) * prob.interval),
+    return grad
+
+
+def camera_of(cal: Calibration, theta: NDArray) -> tuple[Pose, float, float]:
+    """The camera, the readout time (s) and Omega (rad/s) of parameters ``theta`` of the
+    calibration ``cal`` (`Calibration.parameters` moved, say, by its uncertainty)."""
+    return (
+        _pose(theta, cal.pose.size),
+        float(theta[_At.READOUT]) * cal.interval,
+        float(theta[_At.OMEGA]),
     )

@@ -29,6 +29,7 @@ from turntable.video.decode import Picture, Video, VideoError, VideoInfo, lab, r
 from turntable.video.find import PROBE_FRAMES, PROBE_SECONDS, Candidate, find
 from turntable.video.follow import Paths, follow
 from turntable.video.platter import Ellipse, find_platter
+from turntable.video.uncertainty import lens_note, lens_shift_radii
 
 __all__ = ["FirstLook", "Track", "track_video"]
 
@@ -334,7 +335,8 @@ def _finish(info, paths: Paths, cal, results, look, ball_radius, platter_radius,
         results,
         look.candidates,
     )
-    return track, warnings
+    note = lens_note(track)
+    return track, warnings + ([note] if note else [])
 
 
 def calibration_json(track: Track, ball_radius: float, platter_radius: float) -> dict[str, Any]:
@@ -369,6 +371,7 @@ def calibration_json(track: Track, ball_radius: float, platter_radius: float) ->
         "mark_residual_lag1": cal.mark_lag1,
         "readout_s": cal.readout,
         "readout_stderr_s": cal.readout_stderr,
+        "lens": lens_json(track),
         "rim_ellipse_px": {
             "centre": list(track.rim.centre),
             "semi_axes": [track.rim.a, track.rim.b],
@@ -386,8 +389,31 @@ def calibration_json(track: Track, ball_radius: float, platter_radius: float) ->
                 "(u, v) before the lens's distortion: seen at (u, v) + k1 r^2 ((u, v) - centre), "
                 "r the distance from the image's centre over focal_px, k1 = lens_k1"
             ),
-            "stderr": "from the least-squares fit of the camera to the rim and the mark",
+            "stderr": (
+                "from the least-squares fit of the camera to the rim and the mark, with the "
+                "uncertainty of the lens's k1 (lens.k1_used_stderr) and what follows from it"
+            ),
         },
+    }
+
+
+def lens_json(track: Track) -> dict[str, Any]:
+    """Whether the lens's k1 is measured, what the mark's track says of it, and how far its
+    uncertainty may move the positions."""
+    lens = track.calibration.lens
+    return {
+        "k1_measured": lens.measured,
+        "k1_used": track.calibration.derived["lens_k1"],
+        "k1_used_stderr": lens.spread,
+        "k1_from_mark": lens.k1,
+        "k1_from_mark_stderr": lens.k1_stderr,
+        "position_shift_radii": lens_shift_radii(track),
+        "meaning": (
+            "k1_measured false: the camera is a pinhole's (k1 = 0), k1 known only to within "
+            "k1_used_stderr = sqrt(k1_from_mark^2 + k1_from_mark_stderr^2); "
+            "position_shift_radii: the largest move of the film's positions (ball radii) for "
+            "k1 moved by k1_used_stderr, the other parameters of the camera following it"
+        ),
     }
 
 
@@ -406,5 +432,6 @@ def video_summary(track: Track, given_omega: bool) -> dict[str, Any]:
         "clockwise_from_above": track.mirrored,
         "camera": dict(cal.derived),
         "camera_stderr": dict(cal.stderr),
+        "lens": lens_json(track),
         "checks": {name: bool(r["passed"]) for name, r in track.checks.items()},
     }

@@ -1,0 +1,61 @@
+"""How a fit's coefficient follows a change of its film: the linear response of the
+least-squares estimate, (J^T J)^-1 J^T (change of the residuals), by one Gauss-Newton step
+from the fit (`coefficient_response`); a camera's calibration is carried into a coefficient's
+standard error with it (`turntable.video.uncertainty`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+
+from turntable.film import Film, Setup, check_setup
+from turntable.fit.lsq import _dimensionless, _Fitter, _least_squares
+from turntable.fit.parameters import _layout
+
+
+def coefficient_response(
+    film: Film,
+    setup: Setup,
+    model: str,
+    variants: list[tuple[Film, Setup]],
+    *,
+    fit_omega: bool = False,
+    fit_axis: bool = False,
+) -> NDArray[np.float64]:
+    """Return how ln c of a fit moves, to first order, when the film and the setup are
+    replaced by each of ``variants`` (the same frames, measured by another camera).
+
+    One Gauss-Newton step from the fit of ``film`` on each variant, less the step on
+    ``film`` itself: the linear response of the least-squares estimate,
+    (J^T J)^-1 J^T (change of the residuals), without a fit per variant.
+
+    Parameters
+    ----------
+    film : Film
+    setup : Setup
+    model : str
+    variants : list of (Film, Setup)
+        Each with as many frames as ``film``.
+    fit_omega, fit_axis : bool
+        As in `fit_model`.
+
+    Returns
+    -------
+    numpy.ndarray
+        The change of ln c for each variant.
+    """
+    lay = _layout(model, fit_omega, fit_axis)
+    fitter, _, theta, _ = _least_squares(film, check_setup(setup), lay)
+    base = _gauss_newton_step(fitter, theta)[lay.i_c]
+    changes = []
+    for other, other_setup in variants:
+        tau, xy = _dimensionless(other, check_setup(other_setup))
+        step = _gauss_newton_step(_Fitter(lay, tau, xy, other_setup), theta)
+        changes.append(step[lay.i_c] - base)
+    return np.array(changes)
+
+
+def _gauss_newton_step(fitter: _Fitter, theta: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The least-squares step -J^+ r of ``fitter`` from ``theta``."""
+    return np.linalg.lstsq(fitter.jacobian(theta), -fitter.residuals(theta), rcond=None)[0]

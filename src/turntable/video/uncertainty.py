@@ -1,0 +1,215 @@
+"""The camera's uncertainty carried into the friction coefficient of a tracked video.
+
+The film of a video is measured through its calibration (`turntable.video.calibrate`): the
+camera's focal length, tilt, roll, look-at point and distance (the scale), the lens's k1,
+the rolling shutter's readout time and the platter's rate Omega, known with the covariance C
+of the calibration.  A fit's standard error sees only the scatter of the positions about the
+model; an error of the camera moves every position alike and is not in it.  The coefficient's
+part from the calibration is propagated linearly: G_j = d ln c / d theta_j, by central
+differences of the film made with the calibration's parameter j moved by +-1 of its standard
+errors (`turntable.fit.response.coefficient_response`), and se_cal(ln c) = sqrt(G C G^T).  The
+coefficient's standard error is then sqrt(se_stat^2 + se_cal^2); where se_cal exceeds se_stat
+(`DOMINANT`), the calibration limits the measurement, and the output says so.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import NDArray
+
+from turntable.film import Film, Setup
+from turntable.fit import COEFFICIENT, FilmFit, ModelFit
+from turntable.fit.response import coefficient_response
+from turntable.video import camera
+from turntable.video.calibrate import _At, camera_of
+
+__all__ = ["DOMINANT", "LENS_WARNING_R", "CalibrationPart", "calibration_parts", "lens_note"]
+
+#: The calibration's part dominates where it is more than this times the statistical one.
+DOMINANT = 1.0
+#: A lens whose k1 is not measured is named in the warnings where its uncertainty moves the
+#: positions by more than this (ball radii).
+LENS_WARNING_R = 0.01
+#: The calibration's parameters that change the film, by name.
+PARAMETERS = {
+    "focal_length": _At.LOG_FOCAL,
+    "tilt": _At.TILT,
+    "roll": _At.ROLL,
+    "look_at_x": _At.LOOK_X,
+    "look_at_y": _At.LOOK_Y,
+    "distance": _At.LOG_DISTANCE,
+    "omega": _At.OMEGA,
+    "readout": _At.READOUT,
+    "lens_k1": _At.K1,
+}
+
+
+class CalibrationPart(NamedTuple):
+    """The calibration's part of the uncertainty of ln c of one model.
+
+    Attributes
+    ----------
+    stderr : float
+        se_cal(ln c) = sqrt(G C G^T): the relative standard error from the calibration.
+    parts : dict
+        |G_j| se(theta_j) for each parameter of `PARAMETERS`: its share alone (the shares
+        add in quadrature to ``stderr`` where the parameters are uncorrelated).
+    """
+
+    stderr: float
+    parts: dict[str, float]
+
+    @property
+    def largest(self) -> str:
+        """The parameter with the largest share."""
+        return max(self.parts, key=self.parts.__getitem__)
+
+
+def film_with(track, theta: NDArray[np.float64]) -> tuple[Film, float]:
+    """The film of a track measured with the calibration's parameters ``theta``, and its Omega.
+
+    The same frames and images of the ball; times with that readout time, positions seen
+    through that camera, y mirrored as in the track."""
+    pose, readout, omega = camera_of(track.calibration, theta)
+    ok = np.isfinite(track.image[:, 0])
+    image = track.image[ok]
+    xy = camera.sphere_centre(pose, image, track.ball_radius)
+    if track.mirrored:
+        xy[:, 1] *= -1
+    t = track.times[ok] + readout * image[:, 1] / pose.size[1]
+    return Film(t, xy[:, 0], xy[:, 1], synthetic=track.film.synthetic), abs(omega)
+
+
+def _variants(track, setup: Setup, omega_measured: bool, steps: dict[str, float]):
+    """The films (and setups) with each parameter moved by -step and +step."""
+    theta = track.calibration.parameters
+    out = []
+    for name, step in steps.items():
+        for sign in (-1.0, 1.0):
+            moved = theta.copy()
+            moved[PARAMETERS[name]] += sign * step
+            data, omega = film_with(track, moved)
+            out.append((data, setup._replace(omega=omega) if omega_measured else setup))
+    return out
+
+
+def calibration_parts(
+    track, setup: Setup, model: str, *, omega_measured: bool, fit_omega: bool, fit_axis: bool
+) -> CalibrationPart:
+    """The calibration's part of the standard error of ln c of ``model`` fitted to the
+    track's film (see the module's docstring).
+
+    Parameters
+    ----------
+    track : turntable.video.track.Track
+    setup : Setup
+        The setup of the fit: Omega the video's (``omega_measured``) or a given one.
+    model : str
+    omega_measured, fit_omega, fit_axis : bool
+        Whether Omega is the one the calibration measured; the options of the fit.
+    """
+    cal = track.calibration
+    cov = cal.covariance
+    se = {n: math.sqrt(max(cov[i, i], 0.0)) for n, i in PARAMETERS.items()}
+    steps = {n: s for n, s in se.items() if s > 0}
+    change = coefficient_response(
+        track.film,
+        setup,
+        model,
+        _variants(track, setup, omega_measured, steps),
+        fit_omega=fit_omega,
+        fit_axis=fit_axis,
+    ).reshape(-1, 2)
+    g = np.zeros(_At.SIZE)
+    for (name, step), (down, up) in zip(steps.items(), change, strict=True):
+        g[PARAMETERS[name]] = (up - down) / (2 * step)
+    var = float(g @ cov @ g)
+    parts = {n: abs(float(g[i])) * se[n] for n, i in PARAMETERS.items()}
+    return CalibrationPart(math.sqrt(max(var, 0.0)), parts)
+
+
+def widened(result: FilmFit, parts: dict[str, CalibrationPart]) -> FilmFit:
+    """The fits with their standard errors sqrt(se_stat^2 + se_cal^2) (``parts`` by model)."""
+    fits: dict[str, ModelFit] = {}
+    for model, f in result.fits.items():
+        cal = parts[model].stderr
+        log_se = math.hypot(f.log_stderr, cal)
+        fits[model] = f._replace(log_stderr=log_se, stderr=f.coefficient * log_se)
+    return result._replace(fits=fits)
+
+
+def summary(statistical: FilmFit, parts: dict[str, CalibrationPart]) -> dict[str, dict]:
+    """Both parts of each coefficient's standard error, and which dominates."""
+    out = {}
+    for model, f in statistical.fits.items():
+        p = parts[model]
+        out[model] = {
+            f"{COEFFICIENT[model]}_stderr_statistical": f.stderr,
+            f"{COEFFICIENT[model]}_stderr_calibration": f.coefficient * p.stderr,
+            "calibration_dominates": bool(p.stderr > DOMINANT * f.log_stderr),
+            "calibration_parts_relative": p.parts,
+        }
+    return out
+
+
+def dominance_warning(model: str, f: ModelFit, p: CalibrationPart) -> str | None:
+    """One line where the calibration's part of ``model``'s standard error dominates."""
+    if f.bound is not None or not p.stderr > DOMINANT * f.log_stderr:
+        return None
+    name = COEFFICIENT[model]
+    return (
+        f"the camera's calibration dominates the uncertainty of {name} ({model}): +-"
+        f"{f.coefficient * p.stderr:.2g} from the calibration (largest part: "
+        f"{p.largest.replace('_', ' ')}) against +-{f.stderr:.2g} from the scatter of the "
+        "positions; the standard error reported is both added in quadrature"
+    )
+
+
+def lens_shift_radii(track) -> float:
+    """The largest move of the film's positions (ball radii) when k1 moves by its standard
+    error, the calibration's other parameters following it."""
+    cal = track.calibration
+    moved, _ = film_with(track, cal.parameters + cal.lens.shift)
+    d = np.hypot(moved.x - track.film.x, moved.y - track.film.y)
+    return float(np.max(d)) / track.ball_radius if d.size else 0.0
+
+
+def lens_note(track) -> str | None:
+    """One line where the lens's k1 is not measured and its uncertainty moves the positions
+    by more than `LENS_WARNING_R`."""
+    lens = track.calibration.lens
+    if lens.measured:
+        return None
+    shift = lens_shift_radii(track)
+    if not shift > LENS_WARNING_R:
+        return None
+    return (
+        f"the lens's distortion is not measured (the mark's track gives k1 = {lens.k1:.2g} +- "
+        f"{lens.k1_stderr:.2g}): the camera is taken as a pinhole's, k1 = 0 +- "
+        f"{lens.spread:.2g}, which may move the positions by up to {shift:.2g} R; turntable "
+        "fit carries it into the coefficient's standard error"
+    )
+
+
+def carry(
+    track, setup: Setup, result: FilmFit, *, omega_measured: bool, fit_omega: bool, fit_axis: bool
+) -> tuple[FilmFit, dict[str, dict], list[str]]:
+    """The fits of a tracked video with the calibration's uncertainty carried into their
+    standard errors; both parts by model; the warnings where the calibration dominates.
+
+    Parameters
+    ----------
+    track : turntable.video.track.Track
+    setup : Setup
+    result : FilmFit
+        The fits of ``track.film`` with ``setup``.
+    omega_measured, fit_omega, fit_axis : bool
+        As in `calibration_parts`.
+    """
+    options = {"omega_measured": omega_measured, "fit_omega": fit_omega, "fit_axis": fit_axis}
+    parts = {m: calibration_parts(track, setup, m, **options) for m in result.fits}
+    notes = [dominance_warning(m, f, parts[m]) for m, f in result.fits.items()]
+    return widened(result, parts), summary(result, parts), [n for n in notes if n]

@@ -27,6 +27,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from turntable._atomic import write_text
 from turntable._progress import Progress
 
 COLUMNS = ("file", "radius_m", "k", "rpm", "platter_radius_m")
@@ -261,9 +262,7 @@ def simulate(
 
 
 def _write_json(record: dict[str, Any], out: str) -> None:
-    tmp = Path(out).with_name(f".{Path(out).name}.partial")
-    tmp.write_text(json.dumps(record, indent=1, allow_nan=False))
-    os.replace(tmp, out)
+    write_text(out, json.dumps(record, indent=1, allow_nan=False))
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -52,8 +52,9 @@ def full_config(config: dict[str, Any] | None = None) -> dict[str, Any]:
     return config
 
 
-def snakemake(workdir: Path, *args: str, timeout: float = 300) -> subprocess.CompletedProcess:
-    """Run snakemake with `args` in `workdir`, a copy of the sources."""
+def snakemake(workdir: Path, *args: str, timeout: float = 900) -> subprocess.CompletedProcess:
+    """Run snakemake with `args` in `workdir`, a copy of the sources; `timeout` stops a hung
+    build (a loaded machine of 2 cores takes over 300 s for the full one), it times nothing."""
     return subprocess.run(
         [SNAKEMAKE, *args],
         cwd=workdir,

@@ -38,6 +38,10 @@ MARK_AREA = (0.25, 4.0)
 #: not in a gap: where it is is no longer predicted well enough to take the next blob of its
 #: colour for it.  A seed in a later frame (`turntable.video.seeds`) follows it from there.
 MAX_GAP_S, MAX_GAP_FRAMES = 0.5, 10
+#: The mark's turn from where it was last seen within these factors of the platter's (the
+#: image's angles about the rim's centre are the plane's within a factor 1 / cos(tilt)), where
+#: the platter turns by at least `TURN_SEEN` (rad) in between.
+TURN_AGREE, TURN_SEEN = (0.4, 2.5), 0.03
 
 
 class Paths(NamedTuple):
@@ -72,8 +76,8 @@ class LostAt(NamedTuple):
 class _State:
     """What is followed: the last position and the step per frame, known from the second
     frame it is found on (the first is the frame of ``uv``); its area (px) where first
-    found; where it was lost (frame, time, picture) while it is not found, and whether it
-    is given up until its next seed."""
+    found, and the time it was last found; where it was lost (frame, time, picture) while
+    it is not found, and whether it is given up until its next seed."""
 
     def __init__(self, uv: NDArray) -> None:
         self.last: NDArray = uv
@@ -81,6 +85,8 @@ class _State:
         self.misses = 0
         self.seen = False
         self.area: float | None = None
+        self.reseeded = False
+        self.t_last: float | None = None
         self.lost_at: tuple[int, float, NDArray[np.uint8]] | None = None
         self.given_up = False
 
@@ -94,16 +100,21 @@ class _State:
         """Px per frame, once known."""
         return None if self.step is None else float(np.hypot(*self.step))
 
-    def found(self, uv: NDArray, area: float) -> None:
+    def found(self, uv: NDArray, area: float, t: float) -> None:
         if self.seen:
             self.step = (uv - self.last) / (self.misses + 1)
         self.last, self.misses, self.seen, self.lost_at = uv, 0, True, None
-        self.area = self.area or area
+        self.area, self.t_last, self.reseeded = self.area or area, t, False
 
     def miss(self, index: int, t: float, picture: Picture) -> None:
         if self.misses == 0 and not self.given_up:
             self.lost_at = (index, t, rgb(picture))
         self.misses += 1
+
+    def reference_area(self, first: float) -> float | None:
+        """The area its blob is compared with: its own where first found, else ``first`` (in
+        the first frame); none where it is seeded again (the blob at the seed, of any size)."""
+        return None if self.reseeded else self.area or first
 
     def lost_too_long(self, t: float) -> bool:
         """Not found for longer than a gap can be."""
@@ -116,16 +127,17 @@ class _State:
     def reseed(self, uv: NDArray) -> None:
         """Followed again from ``uv``, its step not known."""
         self.last, self.step, self.misses, self.seen = uv, None, 0, False
-        self.lost_at, self.given_up = None, False
+        self.lost_at, self.given_up, self.area, self.t_last = None, False, None, None
+        self.reseeded = True
 
 
 class _Turning(_State):
     """The mark: followed in angle about the rim's centre, in the frame where the rim is a
     circle, so that a prediction across misses stays on the mark's path."""
 
-    def __init__(self, uv: NDArray, rim: Ellipse) -> None:
+    def __init__(self, uv: NDArray, rim: Ellipse, rate: float | None = None) -> None:
         super().__init__(uv)
-        self.rim = rim
+        self.rim, self.rate = rim, rate
         c, s = math.cos(rim.angle), math.sin(rim.angle)
         self.to_circle = np.array([[c / rim.a, s / rim.a], [-s / rim.b, c / rim.b]])
         self.turn = 0.0
@@ -142,11 +154,24 @@ class _Turning(_State):
         p = radius * np.array([math.cos(angle), math.sin(angle)])
         return np.linalg.solve(self.to_circle, p) + self.rim.centre
 
-    def found(self, uv: NDArray, area: float) -> None:
+    def found(self, uv: NDArray, area: float, t: float) -> None:
         if self.seen:
             step = self._polar(uv)[0] - self._polar(self.last)[0]
             self.turn = ((step + math.pi) % (2 * math.pi) - math.pi) / (self.misses + 1)
-        super().found(uv, area)
+        super().found(uv, area, t)
+
+    def turns_with_the_platter(self, b: Blob, t: float) -> bool:
+        """Whether ``b`` at time ``t`` is as far on from where the mark was last seen as the
+        platter turns (within `TURN_AGREE`), where that is far enough to tell
+        (`TURN_SEEN`): a bright spot that stays where it is is not the mark."""
+        if self.rate is None or self.t_last is None:
+            return True
+        expected = self.rate * (t - self.t_last)
+        if expected < TURN_SEEN:
+            return True
+        step = self._polar(np.array([b.u, b.v]))[0] - self._polar(self.last)[0]
+        turn = abs((step + math.pi) % (2 * math.pi) - math.pi)
+        return TURN_AGREE[0] * expected <= turn <= TURN_AGREE[1] * expected
 
     def reseed(self, uv: NDArray) -> None:
         """Followed again from ``uv``, turning as before."""
@@ -155,7 +180,10 @@ class _Turning(_State):
         self.step = step
 
 
-def _pick(found: list[Blob], near: NDArray, area: float, factors) -> Blob | None:
+def _pick(found: list[Blob], near: NDArray, area: float | None, factors) -> Blob | None:
+    """The blob nearest ``near`` and of nearly ``area`` (within ``factors``; any if None)."""
+    if area is None:
+        return min(found, key=lambda b: math.hypot(b.u - near[0], b.v - near[1]), default=None)
     ok = [b for b in found if factors[0] * area < b.area < factors[1] * area]
     if not ok:
         return None
@@ -201,7 +229,7 @@ def follow(
     every = max(frame_count // RIM_FRAMES, 1) if frame_count else 30
     sizes = _Sizes(math.sqrt(found.ball.area / math.pi), math.sqrt(found.mark.area / math.pi))
     ball = _State(np.array([found.ball.u, found.ball.v]))
-    mark = _Turning(np.array([found.mark.u, found.mark.v]), rim)
+    mark = _Turning(np.array([found.mark.u, found.mark.v]), rim, found.mark_rate)
     times, ball_uv, areas, mark_uv, rim_pts = [], [], [], [], [rim_points]
     allowed = None
     index = -1
@@ -219,12 +247,12 @@ def follow(
             _refuse_at_the_edge(got, picture, sizes.ball, index, t)
         m = None
         if not mark.given_up:
-            got, m = _mark_blob(picture, mark, found, allowed, got, sizes, mark_step)
+            got, m = _mark_blob(picture, mark, found, allowed, got, sizes, mark_step, t)
         for state, blob in ((ball, got), (mark, m)):
             if blob is None:
                 state.miss(index, t, picture)
             else:
-                state.found(np.array([blob.u, blob.v]), blob.area)
+                state.found(np.array([blob.u, blob.v]), blob.area, t)
         ball_uv.append((math.nan, math.nan) if got is None else (got.u, got.v))
         areas.append(math.nan if got is None else got.area)
         mark_uv.append((math.nan, math.nan) if m is None else (m.u, m.v))
@@ -266,7 +294,7 @@ def _ball_blob(picture, ball, found: Found, allowed, pose, ball_radius, sizes: _
             if b.touches or not b.cut
         ],
         near,
-        ball.area or found.ball.area,
+        ball.reference_area(found.ball.area),
         BALL_AREA if ball.area else (0.4, 2.5),
     )
     if got is None:
@@ -285,7 +313,7 @@ def _refuse_at_the_edge(got: Blob | None, picture, r_px: float, index: int, t: f
         )
 
 
-def _mark_blob(picture, mark: _Turning, found: Found, allowed, got, sizes: _Sizes, mark_step):
+def _mark_blob(picture, mark: _Turning, found: Found, allowed, got, sizes: _Sizes, mark_step, t):
     """The ball's blob and the mark's, unless the mark passes so close to the ball that their
     images may touch: then neither is measured on this frame."""
     near = mark.predict()
@@ -298,12 +326,13 @@ def _mark_blob(picture, mark: _Turning, found: Found, allowed, got, sizes: _Size
     candidates = [
         b
         for b in blobs(picture, box, found.mark_colour, allowed)
-        if got is None or math.hypot(b.u - got.u, b.v - got.v) > r_px
+        if (got is None or math.hypot(b.u - got.u, b.v - got.v) > r_px)
+        and mark.turns_with_the_platter(b, t)
     ]
     m = _pick(
         candidates,
         near,
-        mark.area or found.mark.area,
+        mark.reference_area(found.mark.area),
         MARK_AREA if mark.area else (0.2, 5.0),
     )
     return got, m

@@ -268,7 +268,9 @@ def _track(video, frames, ball_radius, platter_radius, rpm, ball_at, mark_at):
     found_ball = int(np.isfinite(paths.ball[:, 0]).sum())
     if found_ball < MIN_MARK_FRAMES:
         raise VideoError(
-            f"the ball was found on {found_ball} frames only: give --ball-at U,V on it", look
+            f"the ball was found on {found_ball} frames only: give --ball-at N:U,V on it, in a "
+            "frame N where it is seen",
+            look,
         )
     t = paths.t - paths.t[0]
     cal = calibrate(

@@ -18,8 +18,9 @@ pytest.importorskip("cv2")
 from turntable import cli, film
 from turntable.video import camera
 from turntable.video.check import first_failure
-from turntable.video.decode import Video, rgb, write_video
+from turntable.video.decode import Video, VideoError, rgb, write_video
 from turntable.video.render import Scene, render_video
+from turntable.video.track import track_video
 
 RADIUS, PLATTER = 0.008, 0.15
 SETUP = film.Setup(RADIUS, film.rpm_to_omega(100.0 / 3.0), 0.4, (0.0, 0.0))
@@ -74,6 +75,20 @@ def test_a_mark_lost_mid_way_is_refused_naming_the_frame(hidden_mark, tmp_path, 
     assert "the mark is lost at frame 15 " in res.stderr
     assert "give --mark-at 15:U,V" in res.stderr
     assert sorted(p.name for p in tmp_path.iterdir()) == ["lost.png"]
+
+
+def test_plot_draws_the_frame_where_the_mark_was_lost(hidden_mark) -> None:
+    """What --plot draws on that error is frame 15, the mark where it was last seen."""
+    path, truth = hidden_mark
+    with pytest.raises(VideoError) as lost:
+        track_video(path, RADIUS, PLATTER)
+    with Video(path) as video:
+        frame = next(rgb(p) for i, _, p in video.frames() if i == 15)
+    assert lost.value.found.frame == 15
+    np.testing.assert_array_equal(lost.value.found.image, frame)
+    mark = next(c for c in lost.value.found.candidates if c.kind == "mark")
+    seen = np.array([float(x) for x in mark_pixel(truth, 14).split(",")])
+    assert np.hypot(mark.u - seen[0], mark.v - seen[1]) < 2.0
 
 
 def test_a_seed_where_the_mark_is_seen_again_resumes_it(hidden_mark, tmp_path, capsys) -> None:

@@ -12,8 +12,9 @@ import logging
 import math
 import os
 import warnings
+from collections.abc import Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -22,6 +23,9 @@ from turntable import fit, tracker
 from turntable._json import finite_or_none
 from turntable._progress import Progress
 from turntable._validate import InputError
+
+if TYPE_CHECKING:
+    from turntable.video.seeds import Seed
 
 __all__ = ["MAX_DIMENSIONLESS", "InputError", "fit_file", "fitted_film"]
 
@@ -92,8 +96,8 @@ def fit_file(
     fit_omega: bool = False,
     fit_axis: bool = False,
     platter_radius: float | None = None,
-    ball_at: tuple[float, float] | None = None,
-    mark_at: tuple[float, float] | None = None,
+    ball_at: tuple[float, float] | Sequence[Seed] | None = None,
+    mark_at: tuple[float, float] | Sequence[Seed] | None = None,
     units: str = "m",
     track: str | None = None,
     progress: Progress | None = None,
@@ -121,8 +125,9 @@ def fit_file(
         Fit the rate, the axis too (`turntable.fit.fit_film`); a video's axis always is.
     platter_radius : float, optional
         A video's platter radius, m.
-    ball_at, mark_at : tuple of float, optional
-        A video's first frame: a pixel (u, v) on the ball, on the mark.
+    ball_at, mark_at : tuple of float or list of Seed, optional
+        A video's first frame: a pixel (u, v) on the ball, on the mark; or seeds on any
+        frames (`turntable.video.seeds.Seed`), where following resumes.
     units, track : str
         A Tracker export's units (``turntable.tracker.UNITS``) and track.
     progress : callable, optional
@@ -169,8 +174,8 @@ def fitted_film(
     fit_omega: bool = False,
     fit_axis: bool = False,
     platter_radius: float | None = None,
-    ball_at: tuple[float, float] | None = None,
-    mark_at: tuple[float, float] | None = None,
+    ball_at: tuple[float, float] | Sequence[Seed] | None = None,
+    mark_at: tuple[float, float] | Sequence[Seed] | None = None,
     units: str = "m",
     track: str | None = None,
     progress: Progress | None = None,

@@ -27,6 +27,7 @@ and the option that would help.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 from typing import Any
 
 import numpy as np
@@ -221,9 +222,23 @@ def checks(
     return out
 
 
-def first_failure(results: dict[str, dict[str, Any]]) -> str | None:
-    """One line naming the first check that failed and what would help; None if none."""
+def first_failure(results: dict[str, dict[str, Any]], given: Iterable[str] = ()) -> str | None:
+    """One line naming the first check that failed and what would help; None if none.
+
+    A seed's option in ``given`` (``--ball-at``, ``--mark-at``) is not asked for again: the
+    help asks for it on the frame where the track goes astray instead.
+    """
     for name, r in results.items():
         if not r["passed"]:
-            return f"{r['says']}: {HELP[name]}"
+            return f"{r['says']}: {_not_again(HELP[name], given)}"
     return None
+
+
+def _not_again(help_text: str, given: Iterable[str]) -> str:
+    for option in given:
+        help_text = help_text.replace(
+            f"give {option} U,V",
+            f"check {option} (--plot draws the track), or give {option} N:U,V too, on the "
+            "frame N where it goes astray",
+        )
+    return help_text

@@ -1,5 +1,5 @@
 """``turntable track VIDEO --ball-radius R --platter-radius P [-o FILM.csv] [--rpm N]
-[--ball-at U,V] [--mark-at U,V] [--plot F]``.
+[--ball-at [N:]U,V ...] [--mark-at [N:]U,V ...] [--plot F]``.
 
 Tracks the ball of a video (`turntable.video.track.track_video`) and writes FILM.csv (t, x,
 y in s and m, the lab frame, the axis at the origin; comment lines say how it was made)
@@ -7,7 +7,8 @@ and FILM.json beside it (the calibration with its standard errors, the frame tim
 lost frames, the checks).  Both are written only when everything has succeeded, each under a
 temporary name then renamed.  Bad input, and a track that fails a check, raise
 `turntable._validate.InputError`: one line on stderr and exit status 2 (with ``--plot``, the
-first frame with what was found is drawn); warnings (lost frames, a given --rpm the video
+first frame, or the frame where the ball or the mark was lost, is drawn with what was
+found); warnings (lost frames, a given --rpm the video
 contradicts) are logged, one line each.  With ``--json`` the summary is one JSON object.
 """
 
@@ -35,7 +36,8 @@ Track a ball on a turntable in a video and write the film that `turntable fit` r
 
 The first frame must show the whole platter, in contrast with what surrounds it, the ball
 in contrast with the platter (by colour or brightness), and a small mark on the platter near
-its rim.  Where the search cannot tell which is which, --ball-at and --mark-at say it.
+its rim.  Where the search cannot tell which is which, --ball-at and --mark-at say it;
+where the ball or the mark is lost, --ball-at N:U,V and --mark-at N:U,V resume from frame N.
 Writes FILM.csv (t, x, y: s from the first frame, by the container's
 timestamps; the ball's centre in m, in the lab frame, the axis at the origin, the platter
 turning counterclockwise) and FILM.json (camera, Omega, metres per pixel, the image of the
@@ -74,14 +76,13 @@ def add_parser(sub: Any, parents: list[argparse.ArgumentParser]) -> None:
     )
 
 
-def _pixel(text: str) -> tuple[float, float]:
+def _seed(text: str) -> Any:
+    from turntable.video.seeds import parse_seed
+
     try:
-        u, v = (float(x) for x in text.split(","))
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected U,V (two numbers, px); got {text!r}") from None
-    if not (math.isfinite(u) and math.isfinite(v)):
-        raise argparse.ArgumentTypeError(f"expected finite U,V; got {text!r}")
-    return u, v
+        return parse_seed(text)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
 
 
 def add_video_options(p: argparse.ArgumentParser, radius: str | None) -> None:
@@ -91,12 +92,15 @@ def add_video_options(p: argparse.ArgumentParser, radius: str | None) -> None:
     p.add_argument(
         "--platter-radius", type=float, metavar="P", help="radius of the platter's rim, m"
     )
-    p.add_argument(
-        "--ball-at", type=_pixel, metavar="U,V", help="a video's first frame: a pixel on the ball"
-    )
-    p.add_argument(
-        "--mark-at", type=_pixel, metavar="U,V", help="a video's first frame: a pixel on the mark"
-    )
+    for option, what in (("--ball-at", "ball"), ("--mark-at", "mark")):
+        p.add_argument(
+            option,
+            type=_seed,
+            action="append",
+            metavar="[N:]U,V",
+            help=f"a pixel on the {what} in the video's frame N (0, the first, by default); "
+            "again for another frame, where it was lost",
+        )
 
 
 def track(

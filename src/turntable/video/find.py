@@ -51,6 +51,9 @@ AREA_RANGE, MAX_ELONGATION = (0.35, 2.8), 2.0
 #: at least this share of its convex hull.  A ball's shaded limb and its shadow alone, its lit
 #: side of the platter's colour, make a crescent that covers 0.5-0.75.
 MIN_SOLIDITY = 0.8
+#: Rates of a mark seen in two probe frames agree within this share (a mark seeded where it
+#: does not stand out: `_turning_through`).
+SEED_RATE_AGREE = 0.15
 SEED_HINT = "give the first frame's pixel with --ball-at U,V and --mark-at U,V"
 
 
@@ -80,6 +83,9 @@ class Found(NamedTuple):
     ball_colour: Colour
     mark_colour: Colour
     candidates: list[Candidate]
+    #: the rate (rad/s, on the platter's plane, either way) the mark turns at over the
+    #: probe, None if not measured
+    mark_rate: float | None = None
 
 
 class _Path:
@@ -242,6 +248,7 @@ def find(
             paths.append(_Path(c))
             paths[-1].t.append(probe[0][0])
             paths[-1].uv.append((c.u, c.v))
+    seen = []
     for t, picture in probe[1:]:
         found = [
             (*(np.argwhere(part)[:, ::-1].mean(axis=0) + origin + corner), part.sum())
@@ -251,6 +258,7 @@ def find(
         ]
         st = np.array(found, float).reshape(-1, 3)
         cen, areas = st[:, :2], st[:, 2]
+        seen.append((t, cen, areas))
         for p in paths:
             if len(p.uv) < len(p.t):
                 continue  # lost: not followed further
@@ -282,7 +290,14 @@ def find(
             marks.append((i, rate))
     if mark_at is not None:
         m = seeded["--mark-at"]
-        marks = [(m, dict(marks).get(m))]
+        rate = dict(marks).get(m)
+        turning = None
+        if rate is None:
+            turning = _turning_through(candidates[m], probe[0][0], seen, pose, tolerance, rpm)
+        if turning is not None:
+            rate = turning[0]
+            candidates[m] = candidates[m]._replace(area=turning[1])
+        marks = [(m, rate)]
     else:
         marks = sorted(
             ((i, w) for i, w in marks if candidates[i].turns_at >= MARK_MIN_RADIUS),
@@ -330,6 +345,7 @@ def find(
         Colour(candidates[ball].colour, platter.colour),
         Colour(candidates[m].colour, platter.colour),
         candidates,
+        None if rate is None else abs(rate),
     )
 
 
@@ -349,6 +365,37 @@ def _turning(t: NDArray, z: NDArray, rate: float | None = None) -> tuple[float, 
         rate = float(np.polyfit(t, np.unwrap(np.angle(z)), 1)[0])
     c = complex(np.mean(z * np.exp(-1j * rate * t)))
     return rate, c, float(np.sqrt(np.mean(np.abs(z - c * np.exp(1j * rate * t)) ** 2)))
+
+
+def _turning_through(c: Candidate, t0: float, seen, pose: Pose, tolerance: float, rpm):
+    """What turns out of a seeded region that does not itself turn (a mark seeded inside a
+    lamp's bright spot, which stays where it is): the rate of a platter (rad/s) that the
+    most probe frames agree on (within `SEED_RATE_AGREE`), from the blobs of no more than
+    the region's size at the seed's distance from the axis, and their median area; None if
+    fewer than half of the frames agree.  ``seen`` holds, for each frame after the first,
+    its time, the blobs' centres (n, 2) and their areas."""
+    z0 = complex(*camera.back_project(pose, np.array([[c.u, c.v]]))[0])
+    rates, sizes, frames = [], [], []
+    for k, (t, cen, areas) in enumerate(seen):
+        small = areas <= 1.5 * c.area
+        q = camera.back_project(pose, cen[small]).reshape(-1, 2)
+        z = q[:, 0] + 1j * q[:, 1]
+        near = np.abs(np.abs(z) - abs(z0)) < 2 * tolerance
+        rates += list(np.angle(z[near] / z0) / (t - t0))
+        sizes += list(areas[small][near])
+        frames += [k] * int(near.sum())
+    low, high = (
+        RATE_RANGE if rpm is None else (0.95 * rpm * math.pi / 30, 1.05 * rpm * math.pi / 30)
+    )
+    best, agree = None, []
+    for w in rates:
+        if low <= abs(w) <= high:
+            near_w = [i for i, x in enumerate(rates) if abs(x / w - 1) < SEED_RATE_AGREE]
+            if len({frames[i] for i in near_w}) > len({frames[i] for i in agree}):
+                best, agree = w, near_w
+    if len({frames[i] for i in agree}) < len(seen) / 2:
+        return None
+    return best, float(np.median([sizes[i] for i in agree]))
 
 
 def _area_at(pose: Pose, uv: tuple[float, float], ball_radius: float) -> float:

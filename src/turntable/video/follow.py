@@ -21,9 +21,10 @@ from numpy.typing import NDArray
 from turntable.video import camera
 from turntable.video.blobs import Blob, Colour, blobs, merged_ball
 from turntable.video.camera import Pose
-from turntable.video.decode import Picture, VideoError, lab, window
-from turntable.video.find import Found
+from turntable.video.decode import Picture, VideoError, lab, rgb, window
+from turntable.video.find import Candidate, Found
 from turntable.video.platter import Ellipse, Platter, rim_points_again
+from turntable.video.seeds import Seed
 
 #: Rim points are collected on this many frames, spread over the video.
 RIM_FRAMES = 12
@@ -33,6 +34,14 @@ BALL_AREA = (0.5, 1.7)
 COAST = 5
 #: The mark's blob within these factors of its own.
 MARK_AREA = (0.25, 4.0)
+#: The ball or the mark not found for at least this long (s) and this many frames is lost,
+#: not in a gap: where it is is no longer predicted well enough to take the next blob of its
+#: colour for it.  A seed in a later frame (`turntable.video.seeds`) follows it from there.
+MAX_GAP_S, MAX_GAP_FRAMES = 0.5, 10
+#: The mark's turn from where it was last seen within these factors of the platter's (the
+#: image's angles about the rim's centre are the plane's within a factor 1 / cos(tilt)), where
+#: the platter turns by at least `TURN_SEEN` (rad) in between.
+TURN_AGREE, TURN_SEEN = (0.4, 2.5), 0.03
 
 
 class Paths(NamedTuple):
@@ -48,15 +57,38 @@ class Paths(NamedTuple):
     rim_frames: int
 
 
+class Seeds(NamedTuple):
+    """Seeds of the frames after the first, by frame (`turntable.video.seeds`)."""
+
+    ball: dict[int, Seed]
+    mark: dict[int, Seed]
+
+
+class LostAt(NamedTuple):
+    """Where the ball or the mark was lost: the frame (RGB), its number and the ball and the
+    mark where they were last seen (``turntable.video.find.Candidate``), for drawing."""
+
+    image: NDArray[np.uint8]
+    candidates: list[Candidate]
+    frame: int
+
+
 class _State:
     """What is followed: the last position and the step per frame, known from the second
-    frame it is found on (the first is the frame of ``uv``)."""
+    frame it is found on (the first is the frame of ``uv``); its area (px) where first
+    found, and the time it was last found; where it was lost (frame, time, picture) while
+    it is not found, and whether it is given up until its next seed."""
 
     def __init__(self, uv: NDArray) -> None:
         self.last: NDArray = uv
         self.step: NDArray | None = None
         self.misses = 0
         self.seen = False
+        self.area: float | None = None
+        self.reseeded = False
+        self.t_last: float | None = None
+        self.lost_at: tuple[int, float, NDArray[np.uint8]] | None = None
+        self.given_up = False
 
     def predict(self) -> NDArray:
         """Where the last step leads (over at most `COAST` frames)."""
@@ -68,22 +100,44 @@ class _State:
         """Px per frame, once known."""
         return None if self.step is None else float(np.hypot(*self.step))
 
-    def found(self, uv: NDArray) -> None:
+    def found(self, uv: NDArray, area: float, t: float) -> None:
         if self.seen:
             self.step = (uv - self.last) / (self.misses + 1)
-        self.last, self.misses, self.seen = uv, 0, True
+        self.last, self.misses, self.seen, self.lost_at = uv, 0, True, None
+        self.area, self.t_last, self.reseeded = self.area or area, t, False
 
-    def miss(self) -> None:
+    def miss(self, index: int, t: float, picture: Picture) -> None:
+        if self.misses == 0 and not self.given_up:
+            self.lost_at = (index, t, rgb(picture))
         self.misses += 1
+
+    def reference_area(self, first: float) -> float | None:
+        """The area its blob is compared with: its own where first found, else ``first`` (in
+        the first frame); none where it is seeded again (the blob at the seed, of any size)."""
+        return None if self.reseeded else self.area or first
+
+    def lost_too_long(self, t: float) -> bool:
+        """Not found for longer than a gap can be."""
+        return (
+            self.lost_at is not None
+            and self.misses >= MAX_GAP_FRAMES
+            and t - self.lost_at[1] >= MAX_GAP_S
+        )
+
+    def reseed(self, uv: NDArray) -> None:
+        """Followed again from ``uv``, its step not known."""
+        self.last, self.step, self.misses, self.seen = uv, None, 0, False
+        self.lost_at, self.given_up, self.area, self.t_last = None, False, None, None
+        self.reseeded = True
 
 
 class _Turning(_State):
     """The mark: followed in angle about the rim's centre, in the frame where the rim is a
     circle, so that a prediction across misses stays on the mark's path."""
 
-    def __init__(self, uv: NDArray, rim: Ellipse) -> None:
+    def __init__(self, uv: NDArray, rim: Ellipse, rate: float | None = None) -> None:
         super().__init__(uv)
-        self.rim = rim
+        self.rim, self.rate = rim, rate
         c, s = math.cos(rim.angle), math.sin(rim.angle)
         self.to_circle = np.array([[c / rim.a, s / rim.a], [-s / rim.b, c / rim.b]])
         self.turn = 0.0
@@ -100,14 +154,36 @@ class _Turning(_State):
         p = radius * np.array([math.cos(angle), math.sin(angle)])
         return np.linalg.solve(self.to_circle, p) + self.rim.centre
 
-    def found(self, uv: NDArray) -> None:
+    def found(self, uv: NDArray, area: float, t: float) -> None:
         if self.seen:
             step = self._polar(uv)[0] - self._polar(self.last)[0]
             self.turn = ((step + math.pi) % (2 * math.pi) - math.pi) / (self.misses + 1)
-        super().found(uv)
+        super().found(uv, area, t)
+
+    def turns_with_the_platter(self, b: Blob, t: float) -> bool:
+        """Whether ``b`` at time ``t`` is as far on from where the mark was last seen as the
+        platter turns (within `TURN_AGREE`), where that is far enough to tell
+        (`TURN_SEEN`): a bright spot that stays where it is is not the mark."""
+        if self.rate is None or self.t_last is None:
+            return True
+        expected = self.rate * (t - self.t_last)
+        if expected < TURN_SEEN:
+            return True
+        step = self._polar(np.array([b.u, b.v]))[0] - self._polar(self.last)[0]
+        turn = abs((step + math.pi) % (2 * math.pi) - math.pi)
+        return TURN_AGREE[0] * expected <= turn <= TURN_AGREE[1] * expected
+
+    def reseed(self, uv: NDArray) -> None:
+        """Followed again from ``uv``, turning as before."""
+        step = self.step
+        super().reseed(uv)
+        self.step = step
 
 
-def _pick(found: list[Blob], near: NDArray, area: float, factors) -> Blob | None:
+def _pick(found: list[Blob], near: NDArray, area: float | None, factors) -> Blob | None:
+    """The blob nearest ``near`` and of nearly ``area`` (within ``factors``; any if None)."""
+    if area is None:
+        return min(found, key=lambda b: math.hypot(b.u - near[0], b.v - near[1]), default=None)
     ok = [b for b in found if factors[0] * area < b.area < factors[1] * area]
     if not ok:
         return None
@@ -131,102 +207,59 @@ def follow(
     mark_step: float,
     pose: Pose,
     ball_radius: float,
+    seeds: Seeds | None = None,
 ) -> Paths:
     """Follow the ball and the mark through ``frames`` (see the module's docstring).
 
     ``frame_count`` (0 if unknown) spreads the rim's frames; ``mark_step`` is how far (px)
     the mark may move in one frame before its rate is known; ``pose`` (the camera the rim
-    gives) and ``ball_radius`` (m) give the radius of the ball's image where it is.
+    gives) and ``ball_radius`` (m) give the radius of the ball's image where it is;
+    ``seeds`` (the seeds of the frames after the first) put the ball or the mark where they
+    say, in their frames, and following goes on from there.
 
     Raises
     ------
     VideoError
-        The ball reaching the platter's rim or the image's edge.
+        The ball reaching the platter's rim or the image's edge; the ball or the mark lost
+        for longer than a gap can be (`MAX_GAP_S`, `MAX_GAP_FRAMES`) with no seed after it,
+        or not found at a seed.  Its ``found`` is a `LostAt` where one of them was lost.
     """
+    seeds = seeds or Seeds({}, {})
     rim = platter.rim
     every = max(frame_count // RIM_FRAMES, 1) if frame_count else 30
-    r_px = math.sqrt(found.ball.area / math.pi)
-    r_mark = math.sqrt(found.mark.area / math.pi)
-    # the areas as `blobs` measures them, from the first frame
-    ball_area: float | None = None
-    mark_area: float | None = None
+    sizes = _Sizes(math.sqrt(found.ball.area / math.pi), math.sqrt(found.mark.area / math.pi))
     ball = _State(np.array([found.ball.u, found.ball.v]))
-    mark = _Turning(np.array([found.mark.u, found.mark.v]), rim)
+    mark = _Turning(np.array([found.mark.u, found.mark.v]), rim, found.mark_rate)
     times, ball_uv, areas, mark_uv, rim_pts = [], [], [], [], [rim_points]
     allowed = None
+    index = -1
     for index, t, picture in frames:
         if allowed is None:
             allowed = rim.mask(picture.shape, 1.0 - 3.0 / rim.b)
         times.append(t)
         if index % every == 0 and index:
             rim_pts.append(rim_points_again(platter.level(lab(picture)), rim))
-        near = ball.predict()
-        v = ball.speed()
-        half = 2.5 * r_px + 4 + (ball.misses + 1) * (0 if v is None else v + 2 * r_px)
-        half = min(half, rim.a)  # a ball lost for long: looked for about where it was
-        box = window(tuple(near), half, picture.shape)
-        radius = float(camera.image_radius(pose, near, ball_radius)[0])
-        got = _pick(
-            [
-                b
-                for b in blobs(picture, box, found.ball_colour, allowed, outline=radius)
-                if b.touches or not b.cut
-            ],
-            near,
-            ball_area or found.ball.area,
-            BALL_AREA if ball_area else (0.4, 2.5),
-        )
-        if got is None:
-            got = merged_ball(picture, box, found.ball_colour, near, radius)
-        if got is not None and ball_area is None:
-            ball_area = got.area
-        if got is not None and got.touches:
-            where = (
-                "the platter's rim"
-                if _inside_image(got, picture.shape, r_px)
-                else "the image's edge"
-            )
-            raise VideoError(
-                f"the ball reaches {where} at frame {index} (t = {t:.3f} s): cut the video "
-                "before it does"
-            )
-        # the mark, unless it passes so close to the ball that their images may touch:
-        # then neither is measured on this frame
-        near = mark.predict()
-        v = mark.speed()
+        _reseed(ball, seeds.ball.get(index))
+        _reseed(mark, seeds.mark.get(index))
+        got = None
+        if not ball.given_up:
+            got = _ball_blob(picture, ball, found, allowed, pose, ball_radius, sizes, rim.a)
+            _refuse_at_the_edge(got, picture, sizes.ball, index, t)
         m = None
-        if got is not None and math.hypot(got.u - near[0], got.v - near[1]) < r_px + r_mark + 4:
-            got = None
-        else:
-            half = 3 * r_mark + 4 + (mark_step if v is None else v + 2) * (mark.misses + 1)
-            box = window(tuple(near), half, picture.shape)
-            candidates = [
-                b
-                for b in blobs(picture, box, found.mark_colour, allowed)
-                if got is None or math.hypot(b.u - got.u, b.v - got.v) > r_px
-            ]
-            m = _pick(
-                candidates,
-                near,
-                mark_area or found.mark.area,
-                MARK_AREA if mark_area else (0.2, 5.0),
-            )
-            if m is not None and mark_area is None:
-                mark_area = m.area
-        if got is None:
-            ball.miss()
-            ball_uv.append((math.nan, math.nan))
-            areas.append(math.nan)
-        else:
-            ball.found(np.array([got.u, got.v]))
-            ball_uv.append((got.u, got.v))
-            areas.append(got.area)
-        if m is None:
-            mark.miss()
-            mark_uv.append((math.nan, math.nan))
-        else:
-            mark.found(np.array([m.u, m.v]))
-            mark_uv.append((m.u, m.v))
+        if not mark.given_up:
+            got, m = _mark_blob(picture, mark, found, allowed, got, sizes, mark_step, t)
+        for state, blob in ((ball, got), (mark, m)):
+            if blob is None:
+                state.miss(index, t, picture)
+            else:
+                state.found(np.array([blob.u, blob.v]), blob.area, t)
+        ball_uv.append((math.nan, math.nan) if got is None else (got.u, got.v))
+        areas.append(math.nan if got is None else got.area)
+        mark_uv.append((math.nan, math.nan) if m is None else (m.u, m.v))
+        _check_seeded(seeds, index, got, m, found, picture)
+        _give_up_or_refuse(ball, "ball", seeds.ball, index, t, found, ball, mark)
+        _give_up_or_refuse(mark, "mark", seeds.mark, index, t, found, ball, mark)
+    _refuse_seeds_past_the_end(seeds, index)
     return Paths(
         np.array(times),
         np.array(ball_uv).reshape(-1, 2),
@@ -237,4 +270,131 @@ def follow(
     )
 
 
-__all__ = ["Colour", "Paths", "follow"]
+class _Sizes(NamedTuple):
+    """Radii (px) of the ball's and the mark's images in the first frame."""
+
+    ball: float
+    mark: float
+
+
+def _ball_blob(picture, ball, found: Found, allowed, pose, ball_radius, sizes: _Sizes, reach):
+    """The ball's blob in a window about where it is predicted, at most ``reach`` px from it
+    (None if not found)."""
+    near = ball.predict()
+    v = ball.speed()
+    r_px = sizes.ball
+    half = 2.5 * r_px + 4 + (ball.misses + 1) * (0 if v is None else v + 2 * r_px)
+    half = min(half, reach)  # a ball lost for long: looked for about where it was
+    box = window(tuple(near), half, picture.shape)
+    radius = float(camera.image_radius(pose, near, ball_radius)[0])
+    got = _pick(
+        [
+            b
+            for b in blobs(picture, box, found.ball_colour, allowed, outline=radius)
+            if b.touches or not b.cut
+        ],
+        near,
+        ball.reference_area(found.ball.area),
+        BALL_AREA if ball.area else (0.4, 2.5),
+    )
+    if got is None:
+        got = merged_ball(picture, box, found.ball_colour, near, radius)
+    return got
+
+
+def _refuse_at_the_edge(got: Blob | None, picture, r_px: float, index: int, t: float) -> None:
+    if got is not None and got.touches:
+        where = (
+            "the platter's rim" if _inside_image(got, picture.shape, r_px) else "the image's edge"
+        )
+        raise VideoError(
+            f"the ball reaches {where} at frame {index} (t = {t:.3f} s): cut the video before "
+            "it does"
+        )
+
+
+def _mark_blob(picture, mark: _Turning, found: Found, allowed, got, sizes: _Sizes, mark_step, t):
+    """The ball's blob and the mark's, unless the mark passes so close to the ball that their
+    images may touch: then neither is measured on this frame."""
+    near = mark.predict()
+    v = mark.speed()
+    r_px, r_mark = sizes
+    if got is not None and math.hypot(got.u - near[0], got.v - near[1]) < r_px + r_mark + 4:
+        return None, None
+    half = 3 * r_mark + 4 + (mark_step if v is None else v + 2) * (mark.misses + 1)
+    box = window(tuple(near), half, picture.shape)
+    candidates = [
+        b
+        for b in blobs(picture, box, found.mark_colour, allowed)
+        if (got is None or math.hypot(b.u - got.u, b.v - got.v) > r_px)
+        and mark.turns_with_the_platter(b, t)
+    ]
+    m = _pick(
+        candidates,
+        near,
+        mark.reference_area(found.mark.area),
+        MARK_AREA if mark.area else (0.2, 5.0),
+    )
+    return got, m
+
+
+def _reseed(state: _State, seed: Seed | None) -> None:
+    if seed is not None:
+        state.reseed(np.array([seed.u, seed.v]))
+
+
+def _option(name: str) -> str:
+    return "--ball-at" if name == "ball" else "--mark-at"
+
+
+def _seen_last(found: Found, ball: _State, mark: _State) -> list[Candidate]:
+    """The ball and the mark where they were last seen, as candidates to draw."""
+    return [
+        found.ball._replace(u=float(ball.last[0]), v=float(ball.last[1])),
+        found.mark._replace(u=float(mark.last[0]), v=float(mark.last[1])),
+    ]
+
+
+def _check_seeded(seeds: Seeds, index: int, got, m, found: Found, picture: Picture) -> None:
+    """Refuse a seed where nothing of its colour is found."""
+    for name, seed, blob in (("ball", seeds.ball, got), ("mark", seeds.mark, m)):
+        if index not in seed or blob is not None:
+            continue
+        other = "mark" if name == "ball" else "ball"
+        where = getattr(found, name)._replace(u=seed[index].u, v=seed[index].v)
+        raise VideoError(
+            f"{_option(name)} {seed[index]}: the {name} is not found there (nothing of its "
+            f"colour and size, or the {other} next to it); --plot draws frame {index}",
+            LostAt(rgb(picture), [where], index),
+        )
+
+
+def _give_up_or_refuse(state, name, later, index, t, found, ball, mark) -> None:
+    """A thing lost for longer than a gap can be is given up until its next seed; with no
+    seed after it, the video is refused, naming the frame where it was lost."""
+    if state.given_up or not state.lost_too_long(t):
+        return
+    if any(frame > index for frame in later):
+        state.given_up = True
+        return
+    frame, at, image = state.lost_at
+    raise VideoError(
+        f"the {name} is lost at frame {frame} (t = {at:.3f} s) and not found for "
+        f"{state.misses} frames ({t - at:.2g} s): give {_option(name)} {frame}:U,V, a pixel "
+        f"on it in frame {frame} (or in a later frame where it is seen); --plot draws frame "
+        f"{frame}",
+        LostAt(image, _seen_last(found, ball, mark), frame),
+    )
+
+
+def _refuse_seeds_past_the_end(seeds: Seeds, last: int) -> None:
+    for name, later in (("ball", seeds.ball), ("mark", seeds.mark)):
+        for frame, seed in later.items():
+            if frame > last:
+                raise VideoError(
+                    f"{_option(name)} {seed}: frame {frame} is past the end of the video "
+                    f"(frames 0-{last})"
+                )
+
+
+__all__ = ["Colour", "LostAt", "Paths", "Seeds", "follow"]

@@ -34,9 +34,9 @@ def platter_circle(track: Any, s: np.ndarray) -> np.ndarray:
 
 
 def plot_found(path: str, look: Any, name: str) -> None:
-    """Draw what was found on the first frame before an error (`turntable.video.track.
-    FirstLook`): the rim, and every candidate labelled with its place (u, v) and what it was
-    taken for."""
+    """Draw what was found before an error (`turntable.video.track.FirstLook`) on its frame
+    (the first, or the one where the ball or the mark was lost): the rim, and every candidate
+    labelled with its place (u, v) and what it was taken for."""
     from matplotlib.figure import Figure
 
     h, w = look.image.shape[:2]
@@ -62,7 +62,8 @@ def plot_found(path: str, look: Any, name: str) -> None:
             color=colours.get(cand.kind, "tab:red"),
         )
     ax.set(xlim=(0, w - 1), ylim=(h - 1, 0))
-    ax.set_title(f"{name}: what was found on the first frame (u, v in px)", fontsize=8)
+    frame = "the first frame" if look.frame == 0 else f"frame {look.frame}"
+    ax.set_title(f"{name}: what was found on {frame} (u, v in px)", fontsize=8)
     fig.savefig(path, dpi=150)
 
 

@@ -68,6 +68,8 @@ class Scene(NamedTuple):
         Quality of the H.264 encoding (libx264's constant rate factor; 0 is lossless).
     hidden : tuple of int
         Frames drawn without the ball (a hand over it, say): lost frames for the tracker.
+    mark_hidden : tuple of int
+        Frames drawn without the mark (a finger on it, say).
     clockwise : bool
         The platter turns clockwise as the camera sees it: the scene is the mirror image
         of the counterclockwise one.
@@ -142,6 +144,7 @@ class Scene(NamedTuple):
     mark_at: float = 0.88
     crf: int = 18
     hidden: tuple[int, ...] = ()
+    mark_hidden: tuple[int, ...] = ()
     clockwise: bool = False
     jitter: float = 0.0
     ball_colour: RGB = (245.0, 245.0, 245.0)
@@ -273,11 +276,17 @@ class _Renderer:
         return self.row_dt * np.arange(box[0].start, box[0].stop, dtype=float)[:, None]
 
     def frame(
-        self, t: float, ball: NDArray | None, velocity: NDArray | None = None, dt: float = 0.0
+        self,
+        t: float,
+        ball: NDArray | None,
+        velocity: NDArray | None = None,
+        dt: float = 0.0,
+        mark: bool = True,
     ) -> NDArray[np.uint8]:
         """Frame at t (RGBA, (height, width, 4)); ``ball``: the centres (samples, 2) over
         the shutter's opening, at delay ``dt`` of the rolling shutter, where the ball's
-        velocities are ``velocity`` (samples, 2) (for the other rows)."""
+        velocities are ``velocity`` (samples, 2) (for the other rows); the mark unless
+        ``mark`` is False."""
         sc = self.scene
         img = self.base.copy()
         mask = self.n_phi - 1
@@ -286,7 +295,8 @@ class _Renderer:
         img32[self.full] = self.tex32[self.full_r + ((self.full_phi - s) & mask)]
         edge = self.tex[self.edge_r + ((self.edge_phi - s) & mask), :3]
         img.reshape(-1, 4)[self.edge, :3] = self.edge_table + self.edge_cover * edge + 0.5
-        self._mark(img, t)
+        if mark:
+            self._mark(img, t)
         if ball is not None:
             if velocity is None:
                 velocity, dt = np.zeros_like(ball), 0.0
@@ -488,10 +498,11 @@ def render_video(
             f"{scene.platter_radius - setup.radius:.4g} m)"
         )
     ball[..., 1] *= sign
-    hidden = set(scene.hidden)
+    hidden, mark_hidden = set(scene.hidden), set(scene.mark_hidden)
     frames = (
         (ti, renderer.frame(ti, None if i in hidden else ball[i],
-                            None if velocity is None else velocity[i], delay[i]))
+                            None if velocity is None else velocity[i], delay[i],
+                            i not in mark_hidden))
         for i, ti in enumerate(t)
     )  # fmt: skip
     frames = counted(frames, progress, "rendering", n)

@@ -15,6 +15,7 @@ from __future__ import annotations
 import itertools
 import math
 import os
+from collections.abc import Sequence
 from typing import Any, NamedTuple
 
 import numpy as np
@@ -27,8 +28,15 @@ from turntable.video.calibrate import Calibration, calibrate, rim_camera
 from turntable.video.check import checks, first_failure
 from turntable.video.decode import Picture, Video, VideoError, VideoInfo, lab, rgb
 from turntable.video.find import PROBE_FRAMES, PROBE_SECONDS, Candidate, find
-from turntable.video.follow import Paths, follow
+from turntable.video.follow import LostAt, Paths, Seeds, follow
 from turntable.video.platter import Ellipse, find_platter
+from turntable.video.seeds import (
+    Seed,
+    after_first_frame,
+    check_frames,
+    on_first_frame,
+    seeds_of,
+)
 from turntable.video.uncertainty import lens_note, lens_shift_radii
 
 __all__ = ["FirstLook", "Track", "track_video"]
@@ -44,8 +52,9 @@ DISTANCE_WARNING_R = 0.05
 
 
 class FirstLook(NamedTuple):
-    """What was found on the first frame: the image (RGB), the rim (None if not found) and
-    the candidates for the ball and the mark (``turntable.video.find.Candidate``).
+    """What was found on the first frame, or on the frame where the ball or the mark was
+    lost: the image (RGB), the rim (None if not found), the candidates for the ball and the
+    mark (``turntable.video.find.Candidate``) and the frame's number.
 
     Examples
     --------
@@ -59,6 +68,7 @@ class FirstLook(NamedTuple):
     image: NDArray[np.uint8]
     rim: Ellipse | None
     candidates: list[Candidate]
+    frame: int = 0
 
 
 class Track(NamedTuple):
@@ -134,8 +144,8 @@ def track_video(
     ball_radius: float,
     platter_radius: float,
     rpm: float | None = None,
-    ball_at: tuple[float, float] | None = None,
-    mark_at: tuple[float, float] | None = None,
+    ball_at: tuple[float, float] | Sequence[Seed] | None = None,
+    mark_at: tuple[float, float] | Sequence[Seed] | None = None,
     progress: Progress | None = None,
 ) -> tuple[Track, list[str]]:
     """Track the ball of a video; return the track and the warnings (one line each).
@@ -149,8 +159,9 @@ def track_video(
     rpm : float, optional
         The platter's rate as given: the mark must turn within 1 % of it (a warning if they
         differ by more than 4 standard errors and 0.1 %).
-    ball_at, mark_at : tuple of float, optional
-        Seeds: a pixel (u, v) of the first frame on the ball, and on the mark.
+    ball_at, mark_at : tuple of float or list of Seed, optional
+        Seeds: a pixel (u, v) of the first frame on the ball, and on the mark; or seeds
+        on any frames (`turntable.video.seeds.Seed`), where following resumes.
     progress : callable, optional
         Called as ``progress("tracking", frames read, frames of the video)`` for each frame
         read (the total None when the container does not say).
@@ -165,8 +176,9 @@ def track_video(
     VideoError
         A video that cannot be read or has no frame, no platter, no ball or no mark on its
         first frame, a ball that reaches the platter's rim or the image's edge, a mark lost
-        in nearly every frame, a failed check (`turntable.video.check`).  Its ``found`` is
-        the `FirstLook`, for drawing.
+        in nearly every frame or lost for longer than a gap can be, a seed on nothing or past
+        the video's end, a failed check (`turntable.video.check`).  Its ``found`` is the
+        `FirstLook`, for drawing.
 
     See Also
     --------
@@ -193,7 +205,9 @@ def track_video(
     ...       f"rms error {np.sqrt(np.mean(err**2)) / 0.008:.2f} R")
     31 frames, Omega 4.708 rad/s, rms error 0.04 R
     """
+    ball_at, mark_at = seeds_of(ball_at), seeds_of(mark_at)
     with Video(path) as video:
+        _check_seeds(video.info, ball_at, mark_at)
         try:
             frames = counted(video.frames(), progress, "tracking", video.info.frames or None)
             return _track(video, frames, ball_radius, platter_radius, rpm, ball_at, mark_at)
@@ -202,6 +216,14 @@ def track_video(
             if not message.startswith(video.info.path):
                 message = f"{video.info.path}: {message}"
             raise VideoError(message, exc.found) from None
+
+
+def _check_seeds(info: VideoInfo, ball_at: list[Seed], mark_at: list[Seed]) -> None:
+    try:
+        for option, given in (("--ball-at", ball_at), ("--mark-at", mark_at)):
+            check_frames(option, given, info.frames)
+    except ValueError as exc:
+        raise VideoError(f"{info.path}: {exc}") from None
 
 
 def _track(video, frames, ball_radius, platter_radius, rpm, ball_at, mark_at):
@@ -234,8 +256,8 @@ def _track(video, frames, ball_radius, platter_radius, rpm, ball_at, mark_at):
             pose0,
             ball_radius,
             platter_radius,
-            ball_at,
-            mark_at,
+            on_first_frame(ball_at),
+            on_first_frame(mark_at),
             rpm,
         )
     except VideoError as exc:
@@ -252,9 +274,10 @@ def _track(video, frames, ball_radius, platter_radius, rpm, ball_at, mark_at):
             mark_step,
             pose0,
             ball_radius,
+            Seeds(after_first_frame(ball_at), after_first_frame(mark_at)),
         )
     except VideoError as exc:
-        raise VideoError(str(exc), look) from None
+        raise VideoError(str(exc), _lost_look(exc.found, look)) from None
     ok_mark = np.isfinite(paths.mark[:, 0])
     if ok_mark.sum() < MIN_MARK_FRAMES:
         raise VideoError(
@@ -265,7 +288,9 @@ def _track(video, frames, ball_radius, platter_radius, rpm, ball_at, mark_at):
     found_ball = int(np.isfinite(paths.ball[:, 0]).sum())
     if found_ball < MIN_MARK_FRAMES:
         raise VideoError(
-            f"the ball was found on {found_ball} frames only: give --ball-at U,V on it", look
+            f"the ball was found on {found_ball} frames only: give --ball-at N:U,V on it, in a "
+            "frame N where it is seen",
+            look,
         )
     t = paths.t - paths.t[0]
     cal = calibrate(
@@ -278,10 +303,17 @@ def _track(video, frames, ball_radius, platter_radius, rpm, ball_at, mark_at):
         paths.rim_frames,
     )
     results = checks(cal, paths, found, platter.rim, pose0, ball_radius, platter_radius, rpm)
-    failure = first_failure(results)
+    given = [o for o, s in (("--ball-at", ball_at), ("--mark-at", mark_at)) if s]
+    failure = first_failure(results, given)
     if failure is not None:
         raise VideoError(failure, look)
     return _finish(info, paths, cal, results, look, ball_radius, platter_radius, rpm)
+
+
+def _lost_look(lost: LostAt | None, look: FirstLook) -> FirstLook:
+    if lost is None:
+        return look
+    return FirstLook(lost.image, look.rim, lost.candidates, lost.frame)
 
 
 def _finish(info, paths: Paths, cal, results, look, ball_radius, platter_radius, rpm):

@@ -272,7 +272,9 @@ class Quantity:
 
 
 def _short(value: Any) -> str:
-    return f"{value:.4g}" if isinstance(value, float) else str(value)
+    if isinstance(value, float):
+        return f"{value:.6g}" if value.is_integer() else f"{value:.4g}"
+    return str(value)
 
 
 @dataclass(frozen=True)

@@ -128,4 +128,11 @@ def times_within(name: str, t: NDArray[np.float64], t_max: float, why: str) -> N
 
 
 class InputError(ValueError):
-    """Input that a command refuses before doing any work; the message is one line."""
+    """Input that a command refuses before doing any work; the message is one line.
+
+    Examples
+    --------
+    >>> from turntable.fitting import InputError
+    >>> str(InputError("--radius must be positive (m); got -1.0"))
+    '--radius must be positive (m); got -1.0'
+    """

@@ -127,7 +127,7 @@ def fit_file(
         A video's platter radius, m.
     ball_at, mark_at : tuple of float or list of Seed, optional
         A video's first frame: a pixel (u, v) on the ball, on the mark; or seeds on any
-        frames (`turntable.video.seeds.Seed`), where following resumes.
+        frames (``turntable.video.seeds.Seed``), where following resumes.
     units, track : str
         A Tracker export's units (``turntable.tracker.UNITS``) and track.
     progress : callable, optional

@@ -22,7 +22,7 @@ not.  The rim's edge would pass its own bias to k1: up to a pixel on the near si
 platter's side and its shadow.  The camera is fitted again with that k1 where the mark
 measures it to a tenth (``LENS_Z``); elsewhere the lens is a pinhole's, with k1 known only
 to within sqrt(k1^2 + se^2) of 0 (k1 and se as the mark measures them), which the standard
-errors of the camera and the covariance of the parameters carry (`Lens`).
+errors of the camera and the covariance of the parameters carry (``Lens``).
 """
 
 from __future__ import annotations

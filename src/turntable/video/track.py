@@ -161,7 +161,7 @@ def track_video(
         differ by more than 4 standard errors and 0.1 %).
     ball_at, mark_at : tuple of float or list of Seed, optional
         Seeds: a pixel (u, v) of the first frame on the ball, and on the mark; or seeds
-        on any frames (`turntable.video.seeds.Seed`), where following resumes.
+        on any frames (``turntable.video.seeds.Seed``), where following resumes.
     progress : callable, optional
         Called as ``progress("tracking", frames read, frames of the video)`` for each frame
         read (the total None when the container does not say).

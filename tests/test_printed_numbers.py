@@ -600,6 +600,13 @@ RTOL[("comparison.rolling_resistance", "ratio_minus_1_times_mu0_squared_equal_po
 )
 
 
+for _m in ("per_turn", "per_time"):
+    ROUTES[("comparison.rolling_resistance", f"ratio_at_fig3_mu0_equal_power_{_m}")] = (
+        lambda q, p, m=_m: [_ratio(mu, q["at"]["k"], "equal_power", m) for mu in over(q, "mu0")]
+    )
+    RTOL[("comparison.rolling_resistance", f"ratio_at_fig3_mu0_equal_power_{_m}")] = 1e-6
+
+
 def _crossover(basis: str, measure: str, level: float) -> Callable:
     def fn(q: dict[str, Any], p: dict[str, Any]) -> float:
         k = q["at"]["k"]

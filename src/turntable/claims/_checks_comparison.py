@@ -348,6 +348,9 @@ def _rolling_resistance(p: dict[str, Any]) -> Outcome:
         reproduced[f"ratio_minus_1_times_mu0_squared_{BASIS}_{m}"] = float(
             (fn(m1, k)[BASIS] - 1.0) * m1**2
         )
+        reproduced[f"ratio_at_fig3_mu0_{BASIS}_{m}"] = [
+            float(fn(mu0, k)[BASIS]) for mu0 in p["mu0_fig3"]
+        ]
     reproduced |= {
         "mu0_example_ball": example,
         "ratio_excess_mu0": m1,
@@ -527,6 +530,13 @@ def _quantities(
             reduce="each",
         ),
     }
+    for m in ("per_turn", "per_time"):
+        out[f"ratio_at_fig3_mu0_{BASIS}_{m}"] = Quantity(
+            f"slipping over rolling {growth[m]} under (b), at the paper's mu0 of its Fig. 3",
+            at={"k": k},
+            over={"mu0": p["mu0_fig3"]},
+            reduce="each",
+        )
     for name, m, level in (
         (BASIS, "per_turn", "factor"),
         (BASIS, "per_time", "factor"),

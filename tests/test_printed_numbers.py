@@ -164,8 +164,6 @@ parameter("model.scaling", "turntable_rpm", "turntable_rpm", sorted)
 parameter("comparison.rolling_resistance", "k", "k_paper")
 parameter("comparison.rolling_resistance", "much_faster_factor", "much_faster_factor")
 parameter("limit.convergence", "t_end", "t_limit")
-parameter("solution.fast_transient", "mu0_near_decaying", "mu0_reference",
-          lambda x: sorted(set(x) | set(params()["mu0_fig3"])))  # fmt: skip
 
 
 @route("spectrum.kernel", "dimensional_ball")

@@ -6,11 +6,11 @@ rolling ball (coefficient delta matched to mu0 by the configured comparison, mid
 from the same state on the no-slip constraint, on one scale; dashed: each spiral's centre
 over time (fixed for slipping, drifting into the turntable's axis for rolling); right:
 distance of each centre from the axis against time. Bottom, against mu0, for slipping
-(black) and for rolling under (b) equal dissipated power on the same path of the centre
+(black) and for rolling under equal dissipated power on the same path of the centre
 (each ball with its own spin; wide, under the black curve where they coincide), the
-matching the verdict rests on, and (a) delta = mu0, a sensitivity (dotted): left, log
+matching the verdict rests on, and under equal coefficients, delta = mu0, a sensitivity (dotted): left, log
 growth of the spiral per turn; middle, its growth rate per unit time; right, the ratios
-slipping over rolling, per turn under (b) and (a), per unit time under (b) (dashed), with
+slipping over rolling, per turn under both, per unit time under equal power (dashed), with
 the factor that "much faster" means in the claims registry (much_faster_factor) either way.
 """
 
@@ -69,11 +69,11 @@ ax_c.set_title(rf"$k = {p.k:g}$", fontsize=7)
 mu0 = np.logspace(*np.log10(p.mu0_range), p.n_grid)
 per_turn = turntable.log_growth_per_turn(mu0, p.k)
 per_time = turntable.spectrum(mu0, p.k).alpha1
-# (b), the matching the verdict rests on, wide and under the thin black slipping curve, so
-# that it shows where the two coincide (large mu0); (a), a sensitivity, dotted.
+# Equal power, the matching the verdict rests on, wide and under the thin black slipping curve, so
+# that it shows where the two coincide (large mu0); equal coefficients, a sensitivity, dotted.
 styles = {
-    "equal_power": {"color": "C2", "lw": 3.0, "alpha": 0.6, "label": "(b) equal power"},
-    "equal_coefficient": {"color": "C1", "lw": 1.2, "ls": ":", "label": r"(a) $\delta = \mu_0$"},
+    "equal_power": {"color": "C2", "lw": 3.0, "alpha": 0.6, "label": "equal power"},
+    "equal_coefficient": {"color": "C1", "lw": 1.2, "ls": ":", "label": r"$\delta = \mu_0$"},
 }
 ratios = []
 for comparison, style in styles.items():
@@ -87,7 +87,7 @@ for comparison, style in styles.items():
     if comparison == "equal_power":
         ratios += [per_time / time_r]
         ax_q.loglog(mu0, per_time / time_r, **{**style, "lw": 1.2, "alpha": 1.0, "ls": "--",
-                                                "label": "per unit time, (b)"})  # fmt: skip
+                                                "label": "per unit time, equal power"})  # fmt: skip
 ax_g.loglog(mu0, per_turn, "k", lw=1.0, label="slipping")
 ax_t.loglog(mu0, per_time, "k", lw=1.0)
 factor = claims.resolve_params(p.claims)["much_faster_factor"]

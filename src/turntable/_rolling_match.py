@@ -118,7 +118,7 @@ def equal_power_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
 
     Notes
     -----
-    Comparison (b), equal mean dissipated power on the same motion: the same path
+    The equal-power comparison, equal mean dissipated power on the same motion: the same path
     of the centre, each mechanism with its own kinematics.  The path is the
     slipping model's spiral about the turntable's axis, its growing mode
     :math:`r = \rho e^{\lambda_+ t}` (:math:`\lambda_+ = \alpha_1 + i\beta` of (2.5)).
@@ -177,7 +177,7 @@ def own_spin_power_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
 
     Notes
     -----
-    NOT comparison (b): the alternative reading it replaces, kept so that the
+    NOT the equal-power comparison: the alternative reading it replaces, kept so that the
     difference can be shown.  On the slipping spiral about the axis it charges the
     rolling-resistance power :math:`\delta |\omega|^2` on the slipping ball's own spin
     :math:`\omega = -i \lambda_+ r / k`, which a ball rolling along that path cannot have
@@ -214,7 +214,7 @@ def equal_decay_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
 
     Notes
     -----
-    Comparison (c): equal decay rates of the non-growing parts (:math:`z_-` of (2.7)
+    The equal-decay comparison: equal decay rates of the non-growing parts (:math:`z_-` of (2.7)
     and the moving centre).  :math:`|\sigma_c| = (\delta + p) / (2 (k + 1))` increases
     strictly with :math:`\delta` and lies between :math:`\delta / (2 (k + 1))` and
     :math:`\delta / k`, so the root lies in :math:`[k |\alpha_2|, 2 (k + 1) |\alpha_2|]`.

@@ -326,9 +326,9 @@ def spiral_centre(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> NDArra
     return modal_terms(z0, t, delta, k).centre[:, :2]
 
 
-#: The comparisons of the two mechanisms: (a) delta = mu0, (b) equal dissipated power on the
-#: same path of the centre (each ball with its own spin), (c) equal decay rate of the
-#: non-growing part.
+#: The comparisons of the two mechanisms: equal coefficients (delta = mu0), equal dissipated
+#: power on the same path of the centre (each ball with its own spin), equal decay rate of
+#: the non-growing part.
 COMPARISONS = ("equal_coefficient", "equal_power", "equal_decay")
 
 
@@ -341,7 +341,7 @@ def matched_delta(mu0: ArrayLike, k: ArrayLike, comparison: str) -> NDArray[np.f
     mu0, k : float or array_like
         Slipping friction coefficient and inertia ratio, > 0.
     comparison : {"equal_coefficient", "equal_power", "equal_decay"}
-        (a) delta = mu0; (b) `equal_power_delta`; (c) `equal_decay_delta`.
+        :math:`\delta = \mu_0`; `equal_power_delta`; `equal_decay_delta`.
 
     Returns
     -------
@@ -387,7 +387,8 @@ def growth_per_turn_ratio(mu0: ArrayLike, k: ArrayLike, comparison: str) -> NDAr
     -----
     :math:`(2\pi \alpha_1 / \beta)(\mu_0) / (2\pi \sigma_g / \nu_g)(\delta)`,
     :math:`\delta` = `matched_delta` (mu0, k, comparison).  Limits for large
-    :math:`\mu_0`: :math:`k^2 / (k + 1)^2` (a), 1 (b), k (c).
+    :math:`\mu_0`: :math:`k^2 / (k + 1)^2` (equal coefficients), 1 (equal power),
+    :math:`k` (equal decay).
 
     Examples
     --------

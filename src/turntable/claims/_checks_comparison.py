@@ -29,9 +29,9 @@ from turntable.reference import rolling as ref
 #: centre, each ball with its own kinematics (the only one tied to a motion both balls make).
 BASIS = "equal_power"
 
-#: The matchings of the coefficients compared: BASIS, and (a) delta = mu0 as a sensitivity
-#: (equal numbers in the units of the model, tied to no motion). Matching (c) of
-#: `turntable.rolling`, equal decay of the non-growing part, is left out: it equates the
+#: The matchings of the coefficients compared: BASIS, and equal coefficients (delta = mu0) as a sensitivity
+#: (equal numbers in the units of the model, tied to no motion). The equal-decay
+#: matching of `turntable.rolling`, equal decay of the non-growing part, is left out: it equates the
 #: rolling ball's slow drift of its centre with the slipping ball's fast transient.
 COMPARISONS = (BASIS, "equal_coefficient")
 
@@ -178,17 +178,17 @@ def _order(x: tuple[float, float], y: tuple[float, float]) -> float:
         "integration, the vertical torque shown not to change the planar motion). Compare "
         "how fast the two spirals untwist, per turn (log growth 2 pi alpha1/beta against "
         "2 pi sigma_g/nu_g) and per unit time (alpha1 against sigma_g), over the mu0 grid, "
-        "under (a) delta = mu0, (b) equal dissipated power on the same path of the centre "
+        "under equal coefficients (delta = mu0) and equal dissipated power on the same path of the centre "
         "(the slipping spiral about the axis), each ball with its own kinematics: slipping "
         "dissipates mu0 |u|^2 with its own slip, the ball rolling along that path spins with "
         "w = r + i v and dissipates delta |w|^2 (delta_P checked against a 50-digit "
-        "eigenvector of L); the verdict rests on (b), (a) is a sensitivity. 'Much faster' "
+        "eigenvector of L); the verdict rests on equal power, equal coefficients are a sensitivity. 'Much faster' "
         "means faster by at least the factor much_faster_factor of the parameters: "
-        "confirmed if under (b) slipping is much faster for every measure and "
+        "confirmed if under equal power slipping is much faster for every measure and "
         "coefficient, failed if neither mechanism is ever much faster, undecidable "
         "otherwise. Locate where each ratio crosses 1, the factor and its inverse; check "
         "the large-coefficient limits k^2/(k+1)^2 and 1 of the per-turn ratio, the "
-        "small-coefficient forms of the ratios under (b), and the order of the shifts of "
+        "small-coefficient forms of the ratios under equal power, and the order of the shifts of "
         "the orbital rates from k/(k+1) (at delta = 1e-3, 1e-4 and mu0 = 1e3, 1e4) and of "
         "the drift of the rolling centre."
     ),
@@ -203,7 +203,7 @@ def _rolling_resistance(p: dict[str, Any]) -> Outcome:
     k = p["k_paper"]
     factor = p["much_faster_factor"]
     kk = k / (k + 1.0)
-    # 1. The rolling model and the matching of (b) against independent references.
+    # 1. The rolling model and the equal-power matching against independent references.
     spec_err = 0.0
     power_err = 0.0
     for delta in p["mu0_probe"]:
@@ -252,7 +252,7 @@ def _rolling_resistance(p: dict[str, Any]) -> Outcome:
         at_big = growth_ratios(big, kv)
         for name in COMPARISONS:
             limit_err = max(limit_err, abs(float(at_big[name]) / limits[name](kv) - 1.0))
-    # (b) for small mu0: delta_P -> mu0 and lambda_+ ~ sqrt(i mu0), so slipping grows by
+    # Equal power for small mu0: delta_P -> mu0 and lambda_+ ~ sqrt(i mu0), so slipping grows by
     # 2 pi per turn against 2 pi delta_P / k^2 and at sqrt(mu0 / 2) against
     # delta_P / (k (k + 1)): the ratios tend to k^2 / mu0 and k (k + 1) / sqrt(2 mu0).
     tiny = 1e-12
@@ -334,7 +334,7 @@ def _rolling_resistance(p: dict[str, Any]) -> Outcome:
             suffix = "" if lvl == "1" else f"_{lvl}"
             reproduced[f"crossover{suffix}_{name}_{m}"] = crossing[(m, name, lvl)]
     # The example ball of model.scaling on its turntables, and the approach of the ratios
-    # under (b) to 1 from above, like 1 + c / mu0^2 (c measured at mu0 = m1).
+    # under equal power to 1 from above, like 1 + A / mu0^2 (A measured at mu0 = m1).
     mass = ball_mass(p["ball_radius"], p["ball_density"])
     example = sorted(
         dimensionless_friction(p["friction_viscous"], mass, plane_rate(r))
@@ -428,11 +428,11 @@ def _rolling_resistance(p: dict[str, Any]) -> Outcome:
     bottom, top = reproduced["much_faster_factors_with_this_verdict"]
     summary = (
         f"slipping/rolling at k = {sig(k, 3)}, mu0 in [{lo}, {hi}], 'much' = by a factor "
-        f">= {f}. (b) same path, equal power: slipping faster for every mu0, at mu0 = {lo} "
+        f">= {f}. Equal power on the same path: slipping faster for every mu0, at mu0 = {lo} "
         f"by {at0('equal_power', 'per_turn')} per turn, {at0('equal_power', 'per_time')} per "
-        f"unit time; much faster {both(slipping_much, 'equal_power')}. (a) delta = mu0: "
+        f"unit time; much faster {both(slipping_much, 'equal_power')}. Equal coefficients (delta = mu0): "
         f"slipping much faster {both(slipping_much, 'equal_coefficient')}; rolling much "
-        f"faster {both(rolling_much, 'equal_coefficient')}. Smallest ratio under (b) "
+        f"faster {both(rolling_much, 'equal_coefficient')}. Smallest ratio under equal power "
         f"{sig(smallest, 3)}; the same verdict for every factor in ({sig(bottom, 3)}, "
         f"{'infinity' if top is None else sig(top, 3)}]"
     )
@@ -451,7 +451,7 @@ def _rolling_resistance(p: dict[str, Any]) -> Outcome:
         f"mu0 = {sig(m1)} and {sig(m2)} (order "
         f"{sig(reproduced['slipping_orbital_shift_order_in_mu0'], 4)} in mu0, leading term "
         "-2 k^5/((k+1)^5 mu0^2)). 'Much faster' is read as faster by a factor of at least "
-        f"{f}. Under (b), the same path of the centre (the slipping spiral about the axis) "
+        f"{f}. Under equal power, on the same path of the centre (the slipping spiral about the axis) "
         "with each mechanism's own kinematics (slipping dissipates mu0 |u|^2 with its own "
         "slip; the ball rolling along that path spins with w = r + i v and dissipates "
         "delta |w|^2), delta = mu0 |(k+1) lambda_+ - i k|^2 / (k^2 |1 + i lambda_+|^2), "
@@ -463,13 +463,13 @@ def _rolling_resistance(p: dict[str, Any]) -> Outcome:
         "ball's own spin -i lambda_+ r / k, which a ball rolling along that path cannot "
         "have, would match delta -> k^2 as mu0 -> 0 and bound the per-turn ratio by "
         f"{sig(own_sup, 4)}, where the rolling ball's own spin gives "
-        f"{at0('equal_power', 'per_turn')} at mu0 = {lo}: (b) uses the spin a rolling ball "
-        "has. So under (b) slipping untwists much faster for small mu0 and by less than "
+        f"{at0('equal_power', 'per_turn')} at mu0 = {lo}: equal power uses the spin a rolling ball "
+        "has. So under equal power slipping untwists much faster for small mu0 and by less than "
         f"{f} for large mu0 (smallest ratio {sig(smallest, 3)}); which holds depends on mu0, "
         "which the paper does not give (the coefficients of Borisov et al. 2018 are not "
         "quoted). The verdict is the same for every factor in "
         f"({sig(bottom, 3)}, {'infinity' if top is None else sig(top, 3)}]. Sensitivity, "
-        "with delta = mu0 (a): slipping is much faster "
+        "with equal coefficients (delta = mu0): slipping is much faster "
         f"{both(slipping_much, 'equal_coefficient')}, rolling much faster "
         f"{both(rolling_much, 'equal_coefficient')}; for large coefficients rolling is faster "
         "per turn by (k+1)^2/k^2. "
@@ -492,11 +492,11 @@ def _rolling_resistance(p: dict[str, Any]) -> Outcome:
     elif verdict == "confirmed":
         evidence = (
             f"Slipping untwists faster by a factor of at least {f}, per turn and per unit "
-            "time, under (b), for every mu0 tried."
+            "time, under equal power, for every mu0 tried."
         )
     elif verdict == "failed":
         evidence = (
-            f"Neither mechanism untwists faster than the other by a factor of {f} under (b), "
+            f"Neither mechanism untwists faster than the other by a factor of {f} under equal power, "
             "per turn or per unit time, for any mu0 tried."
         )
     return Outcome(verdict, reproduced, tol, summary, evidence, _quantities(p, k, example, m1))
@@ -521,10 +521,10 @@ def _quantities(
             reduce="each",
         ),
         f"ratio_minus_1_times_mu0_squared_{BASIS}_per_turn": Quantity(
-            "(slipping over rolling per turn, (b), minus 1) times mu0^2", at={"k": k, "mu0": m1}
+            "(slipping over rolling per turn, equal power, minus 1) times mu0^2", at={"k": k, "mu0": m1}
         ),
         f"ratio_range_at_example_ball_{BASIS}_per_turn": Quantity(
-            "slipping over rolling growth per turn under (b), smallest and largest",
+            "slipping over rolling growth per turn under equal power, smallest and largest",
             at={"k": k},
             over={"mu0": example},
             reduce="each",
@@ -532,7 +532,7 @@ def _quantities(
     }
     for m in ("per_turn", "per_time"):
         out[f"ratio_at_fig3_mu0_{BASIS}_{m}"] = Quantity(
-            f"slipping over rolling {growth[m]} under (b), at the paper's mu0 of its Fig. 3",
+            f"slipping over rolling {growth[m]} under equal power, at the paper's mu0 of its Fig. 3",
             at={"k": k},
             over={"mu0": p["mu0_fig3"]},
             reduce="each",
@@ -544,7 +544,7 @@ def _quantities(
     ):
         out[f"crossover_{level}_{name}_{m}"] = Quantity(
             f"mu0 where slipping over rolling {growth[m]} under "
-            f"{'(b)' if name == BASIS else '(a)'} crosses "
+            f"{'equal power' if name == BASIS else 'equal coefficients'} crosses "
             f"{'F' if level == 'factor' else '1/F'}, on {grid}",
             at={"k": k},
         )

@@ -8,10 +8,10 @@ over time (fixed for slipping, drifting into the turntable's axis for rolling); 
 distance of each centre from the axis against time. Bottom, against mu0, for slipping
 (black) and for rolling under equal dissipated power on the same path of the centre
 (each ball with its own spin; wide, under the black curve where they coincide), the
-matching the verdict rests on, and under equal coefficients, delta = mu0, a sensitivity (dotted): left, log
-growth of the spiral per turn; middle, its growth rate per unit time; right, the ratios
-slipping over rolling, per turn under both, per unit time under equal power (dashed), with
-the factor that "much faster" means in the claims registry (much_faster_factor) either way.
+matching the verdict rests on, and under equal coefficients, delta = mu0, a sensitivity
+(dotted): left, log growth of the spiral per turn; middle, its growth rate per unit time;
+right, the ratios slipping over rolling, per turn under both, per unit time under equal
+power (dashed), with the factor that "much faster" means in the claims registry (much_faster_factor) either way.
 """
 
 # %%

@@ -29,10 +29,10 @@ from turntable.reference import rolling as ref
 #: centre, each ball with its own kinematics (the only one tied to a motion both balls make).
 BASIS = "equal_power"
 
-#: The matchings of the coefficients compared: BASIS, and equal coefficients (delta = mu0) as a sensitivity
-#: (equal numbers in the units of the model, tied to no motion). The equal-decay
-#: matching of `turntable.rolling`, equal decay of the non-growing part, is left out: it equates the
-#: rolling ball's slow drift of its centre with the slipping ball's fast transient.
+#: The matchings of the coefficients compared: BASIS, and equal coefficients (delta = mu0) as
+#: a sensitivity (equal numbers in the units of the model, tied to no motion). The equal-decay
+#: matching of `turntable.rolling` is left out: it equates the rolling ball's slow drift of its
+#: centre with the slipping ball's fast transient.
 COMPARISONS = (BASIS, "equal_coefficient")
 
 #: The two measures of how fast a spiral untwists: per turn (log growth of the radius per
@@ -178,11 +178,13 @@ def _order(x: tuple[float, float], y: tuple[float, float]) -> float:
         "integration, the vertical torque shown not to change the planar motion). Compare "
         "how fast the two spirals untwist, per turn (log growth 2 pi alpha1/beta against "
         "2 pi sigma_g/nu_g) and per unit time (alpha1 against sigma_g), over the mu0 grid, "
-        "under equal coefficients (delta = mu0) and equal dissipated power on the same path of the centre "
-        "(the slipping spiral about the axis), each ball with its own kinematics: slipping "
+        "under equal coefficients (delta = mu0) and equal dissipated power on the same path "
+        "of the centre (the slipping spiral about the axis), each ball with its own "
+        "kinematics: slipping "
         "dissipates mu0 |u|^2 with its own slip, the ball rolling along that path spins with "
         "w = r + i v and dissipates delta |w|^2 (delta_P checked against a 50-digit "
-        "eigenvector of L); the verdict rests on equal power, equal coefficients are a sensitivity. 'Much faster' "
+        "eigenvector of L); the verdict rests on equal power, equal coefficients are a "
+        "sensitivity. 'Much faster' "
         "means faster by at least the factor much_faster_factor of the parameters: "
         "confirmed if under equal power slipping is much faster for every measure and "
         "coefficient, failed if neither mechanism is ever much faster, undecidable "
@@ -430,7 +432,8 @@ def _rolling_resistance(p: dict[str, Any]) -> Outcome:
         f"slipping/rolling at k = {sig(k, 3)}, mu0 in [{lo}, {hi}], 'much' = by a factor "
         f">= {f}. Equal power on the same path: slipping faster for every mu0, at mu0 = {lo} "
         f"by {at0('equal_power', 'per_turn')} per turn, {at0('equal_power', 'per_time')} per "
-        f"unit time; much faster {both(slipping_much, 'equal_power')}. Equal coefficients (delta = mu0): "
+        f"unit time; much faster {both(slipping_much, 'equal_power')}. "
+        "Equal coefficients (delta = mu0): "
         f"slipping much faster {both(slipping_much, 'equal_coefficient')}; rolling much "
         f"faster {both(rolling_much, 'equal_coefficient')}. Smallest ratio under equal power "
         f"{sig(smallest, 3)}; the same verdict for every factor in ({sig(bottom, 3)}, "
@@ -451,7 +454,8 @@ def _rolling_resistance(p: dict[str, Any]) -> Outcome:
         f"mu0 = {sig(m1)} and {sig(m2)} (order "
         f"{sig(reproduced['slipping_orbital_shift_order_in_mu0'], 4)} in mu0, leading term "
         "-2 k^5/((k+1)^5 mu0^2)). 'Much faster' is read as faster by a factor of at least "
-        f"{f}. Under equal power, on the same path of the centre (the slipping spiral about the axis) "
+        f"{f}. Under equal power, on the same path of the centre (the slipping spiral about "
+        "the axis) "
         "with each mechanism's own kinematics (slipping dissipates mu0 |u|^2 with its own "
         "slip; the ball rolling along that path spins with w = r + i v and dissipates "
         "delta |w|^2), delta = mu0 |(k+1) lambda_+ - i k|^2 / (k^2 |1 + i lambda_+|^2), "
@@ -496,7 +500,8 @@ def _rolling_resistance(p: dict[str, Any]) -> Outcome:
         )
     elif verdict == "failed":
         evidence = (
-            f"Neither mechanism untwists faster than the other by a factor of {f} under equal power, "
+            f"Neither mechanism untwists faster than the other by a factor of {f} under "
+            "equal power, "
             "per turn or per unit time, for any mu0 tried."
         )
     return Outcome(verdict, reproduced, tol, summary, evidence, _quantities(p, k, example, m1))
@@ -521,7 +526,8 @@ def _quantities(
             reduce="each",
         ),
         f"ratio_minus_1_times_mu0_squared_{BASIS}_per_turn": Quantity(
-            "(slipping over rolling per turn, equal power, minus 1) times mu0^2", at={"k": k, "mu0": m1}
+            "(slipping over rolling per turn, equal power, minus 1) times mu0^2",
+            at={"k": k, "mu0": m1},
         ),
         f"ratio_range_at_example_ball_{BASIS}_per_turn": Quantity(
             "slipping over rolling growth per turn under equal power, smallest and largest",
@@ -532,7 +538,8 @@ def _quantities(
     }
     for m in ("per_turn", "per_time"):
         out[f"ratio_at_fig3_mu0_{BASIS}_{m}"] = Quantity(
-            f"slipping over rolling {growth[m]} under equal power, at the paper's mu0 of its Fig. 3",
+            f"slipping over rolling {growth[m]} under equal power, at the paper's mu0 of its "
+            "Fig. 3",
             at={"k": k},
             over={"mu0": p["mu0_fig3"]},
             reduce="each",

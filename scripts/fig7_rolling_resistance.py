@@ -11,7 +11,8 @@ distance of each centre from the axis against time. Bottom, against mu0, for sli
 matching the verdict rests on, and under equal coefficients, delta = mu0, a sensitivity
 (dotted): left, log growth of the spiral per turn; middle, its growth rate per unit time;
 right, the ratios slipping over rolling, per turn under both, per unit time under equal
-power (dashed), with the factor that "much faster" means in the claims registry (much_faster_factor) either way.
+power (dashed), with the factor that "much faster" means in the claims registry
+(much_faster_factor) either way.
 """
 
 # %%

@@ -2,7 +2,7 @@
 """Figure 4: trajectories of the centre of the ball for several friction coefficients.
 
 Caption: path (x(t), y(t)) of the centre for each mu0 of the configuration (initial state
-x = y = 1, v = 0, wx = 0, wy = 1, k = 2/5 by default); open circle: z(0); heavy dot: the
+x = y = 1, v = 0, wx = 0, wy = 1, k = 2/5 by default); open circle: the start; heavy dot: the
 spiral centre (x0, y0) of (2.8). Last panel: distance from the spiral centre against time
 on a log scale, which grows like e^(alpha1 t) once the transient has died out.
 """
@@ -29,7 +29,7 @@ for i, (ax, mu0, span) in enumerate(zip(panels, p.mu0, p.t_span, strict=True)):
     z = turntable.solve(p.state, t, mu0, p.k)
     alpha1 = turntable.spectrum(mu0, p.k).alpha1
     ax.plot(z[:, 0], z[:, 1], color=f"C{i}", lw=0.9)
-    ax.plot(*p.state[:2], "o", mfc="w", mec="k", ms=4, label="$z(0)$")
+    ax.plot(*p.state[:2], "o", mfc="w", mec="k", ms=4, label="start")
     ax.plot(*centre, "ko", ms=5, label=r"$(x_0, y_0)$")
     # Equal scales in x and y, but every panel keeps the same size (the limits adapt).
     ax.set(aspect="equal", adjustable="datalim", xlabel="$x/R$", ylabel="$y/R$")

@@ -55,7 +55,7 @@ for ax, z, c, color, title, short in runs:
     ax.plot(z[:, 0], z[:, 1], color=color, lw=0.8)
     ax.plot(c[:, 0], c[:, 1], "k--", lw=1.0, label="spiral centre over time")
     ax.plot(*c[-1], "ko", ms=4, label=f"spiral centre at $t\\Omega = {t[-1]:g}$")
-    ax.plot(*z0[:2], "o", mfc="w", mec="k", ms=4, label="$z(0)$")
+    ax.plot(*z0[:2], "o", mfc="w", mec="k", ms=4, label="start")
     ax.plot(0, 0, "k+", ms=8, label="axis")
     ax.set(aspect="equal", xlim=lims[0], ylim=lims[1], xlabel="$x/R$", ylabel="$y/R$")
     ax.set_title(title, fontsize=7)

@@ -28,7 +28,8 @@ import turntable
 from ci_build import full_config
 from turntable import claims
 from turntable.claims import report
-from turntable.claims._core import mu0_grid, split_bound, within
+from turntable.claims._core import split_bound, within
+from turntable.claims._params import mu0_grid
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -789,7 +790,7 @@ def test_rolling_comparison_at_the_example_ball(evaluated: Callable) -> None:
     """Under equal power slipping is faster than rolling but not twice as fast at the
     example ball's mu0 (all above the crossover), and the ratio tends to 1 from above like
     1 + c/mu0^2: c > 0, and the ratio at mu0 = 100 is 1 + c/100^2 to first order."""
-    from turntable.claims._checks_comparison import growth_ratios
+    from turntable.claims._ratios import growth_ratios
 
     reproduced = evaluated("comparison.rolling_resistance")["reproduced"]
     factor = reproduced["much_faster_factor"]
@@ -827,13 +828,13 @@ def _ratios(*values: Any) -> dict[str, np.ndarray]:
     ],
 )
 def test_much_faster_verdict_decides_each_branch(ratios: Any, expected: str) -> None:
-    from turntable.claims._checks_comparison import much_faster_verdict
+    from turntable.claims._ratios import much_faster_verdict
 
     assert much_faster_verdict(ratios, 2.0) == expected
 
 
 def test_much_faster_verdict_refuses_bad_input() -> None:
-    from turntable.claims._checks_comparison import much_faster_verdict
+    from turntable.claims._ratios import much_faster_verdict
 
     with pytest.raises(ValueError, match="factor"):
         much_faster_verdict(_ratios([3.0]), 1.0)
@@ -857,7 +858,7 @@ def test_much_faster_verdict_refuses_bad_input() -> None:
 def test_factors_with_the_same_verdict(ratios: Any, factor: float) -> None:
     """Every factor inside the reported range gives the verdict of ``factor``; just outside
     it, another."""
-    from turntable.claims._checks_comparison import (
+    from turntable.claims._ratios import (
         factors_with_the_same_verdict,
         much_faster_verdict,
     )

@@ -492,7 +492,7 @@ MUTANTS = [
         "(ratio > 1), with no factor for 'much'",
         (
             (
-                "claims/_checks_comparison.py",
+                "claims/_ratios.py",
                 "if np.all(values >= factor):",
                 "if np.all(values > 1.0):",
                 1,
@@ -507,7 +507,7 @@ MUTANTS = [
         "although rolling may be (the other reading of 'in this case')",
         (
             (
-                "claims/_checks_comparison.py",
+                "claims/_ratios.py",
                 "if np.all((values > 1.0 / factor) & (values < factor)):",
                 "if np.all(values < factor):",
                 1,

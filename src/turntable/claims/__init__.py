@@ -48,7 +48,6 @@ from collections.abc import Mapping
 from typing import Any
 
 from turntable.claims._core import (
-    DEFAULT_PARAMS,
     VERDICTS,
     Claim,
     Outcome,
@@ -57,11 +56,10 @@ from turntable.claims._core import (
     Where,
     clean,
     decide,
-    params_schema,
     register,
     registered,
-    resolve_params,
 )
+from turntable.claims._params import DEFAULT_PARAMS, params_schema, resolve_params
 
 #: The modules of checks, in the order of the paper; each registers its claims in that order.
 CHECK_MODULES: tuple[str, ...] = (

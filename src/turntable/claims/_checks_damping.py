@@ -10,17 +10,8 @@ import numpy as np
 import turntable as tt
 from turntable import reference as ref
 from turntable.claims._checks_solution import _states
-from turntable.claims._core import (
-    Outcome,
-    Quantity,
-    Where,
-    all_within,
-    decide,
-    mu0_grid,
-    random_states,
-    register,
-    sig,
-)
+from turntable.claims._core import Outcome, Quantity, Where, all_within, decide, register, sig
+from turntable.claims._params import mu0_grid, random_states
 
 
 @register(

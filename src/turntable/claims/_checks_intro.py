@@ -11,16 +11,8 @@ from numpy.typing import NDArray
 import turntable as tt
 from turntable import reference as ref
 from turntable.claims import _constrained as con
-from turntable.claims._core import (
-    Outcome,
-    Quantity,
-    Where,
-    all_within,
-    decide,
-    random_states,
-    register,
-    sig,
-)
+from turntable.claims._core import Outcome, Quantity, Where, all_within, decide, register, sig
+from turntable.claims._params import random_states
 
 #: Tolerance of the quantities that are constant, or equal, up to rounding (relative).
 ROUNDING = 1e-9

@@ -9,16 +9,8 @@ import numpy as np
 
 import turntable as tt
 from turntable import reference as ref
-from turntable.claims._core import (
-    Outcome,
-    Quantity,
-    Where,
-    all_within,
-    decide,
-    random_states,
-    register,
-    sig,
-)
+from turntable.claims._core import Outcome, Quantity, Where, all_within, decide, register, sig
+from turntable.claims._params import random_states
 
 
 def _state_scale(z: np.ndarray) -> float:

@@ -9,16 +9,8 @@ import numpy as np
 import turntable as tt
 from turntable import reference as ref
 from turntable.claims import _constrained as con
-from turntable.claims._core import (
-    Outcome,
-    Quantity,
-    Where,
-    all_within,
-    decide,
-    random_states,
-    register,
-    sig,
-)
+from turntable.claims._core import Outcome, Quantity, Where, all_within, decide, register, sig
+from turntable.claims._params import random_states
 
 #: The other maps onto u = 0 that the limit's projector is measured against.
 OTHER_MAPS = ("orthogonal projection", "keep (r, v), solve for w", "keep (r, w), solve for v")

@@ -10,7 +10,6 @@ import turntable as tt
 from turntable import reference as ref
 from turntable.claims._checks_intro import ball_mass, plane_rate
 from turntable.claims._core import (
-    DEFAULT_PARAMS,
     Outcome,
     Quantity,
     Where,
@@ -19,6 +18,7 @@ from turntable.claims._core import (
     register,
     sig,
 )
+from turntable.claims._params import DEFAULT_PARAMS
 
 
 @register(

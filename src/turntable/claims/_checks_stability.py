@@ -9,17 +9,8 @@ import numpy as np
 import turntable as tt
 from turntable import reference as ref
 from turntable.claims._checks_spectrum import _rel
-from turntable.claims._core import (
-    Outcome,
-    Quantity,
-    Where,
-    all_within,
-    decide,
-    mu0_grid,
-    random_states,
-    register,
-    sig,
-)
+from turntable.claims._core import Outcome, Quantity, Where, all_within, decide, register, sig
+from turntable.claims._params import mu0_grid, random_states
 
 #: How close (a fraction of its initial distance) a ball on the decaying subspace is brought
 #: to the equilibrium in the check of spectrum.unstable_focus.

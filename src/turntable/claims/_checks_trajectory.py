@@ -9,16 +9,8 @@ import numpy as np
 
 import turntable as tt
 from turntable import reference as ref
-from turntable.claims._core import (
-    Outcome,
-    Quantity,
-    Where,
-    all_within,
-    decide,
-    mu0_grid,
-    register,
-    sig,
-)
+from turntable.claims._core import Outcome, Quantity, Where, all_within, decide, register, sig
+from turntable.claims._params import mu0_grid
 
 
 @register(

@@ -394,7 +394,7 @@ def _jump(k: float, p: dict[str, Any]) -> tuple[float, float]:
 
 @route("limit.convergence", "speed_change_across_layer_k_paper", rtol=2e-3)
 def _speed(q: dict[str, Any], p: dict[str, Any]) -> list[float]:
-    """The jump at each mu0: the slipping solution after the layer, 40/|alpha2|."""
+    """The jump at each mu0: the slipping solution after the layer, layer_decay_times/|alpha2|."""
     return [_crossed(m, q["at"]["k"], p)[0] for m in over(q, "mu0")]
 
 
@@ -405,7 +405,7 @@ def _spin(q: dict[str, Any], p: dict[str, Any]) -> list[float]:
 
 def _crossed(mu0: float, k: float, p: dict[str, Any]) -> tuple[float, float]:
     z0 = np.asarray(p["state_fig4"])
-    t = 40.0 / abs(rates(mu0, k)[1])
+    t = p["layer_decay_times"] / abs(rates(mu0, k)[1])
     z = scipy.linalg.expm(big(mu0, k) * t) @ z0
     d = z[2:] - z0[2:]
     return float(np.hypot(*d[:2])), float(np.hypot(*d[2:]))

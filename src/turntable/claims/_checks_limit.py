@@ -220,8 +220,9 @@ def _frequency(p: dict[str, Any]) -> Outcome:
     method=(
         "For the slipping state of Fig. 4, its no-slip counterpart and every k, measure on "
         "[0, T] the largest position error and the largest velocity error outside an initial "
-        "layer of width 40/|alpha2| against the no-slip motion, fit their order in mu0, and "
-        "the distance between the two centres at t = 1/alpha1. Across the layer the "
+        "layer of width layer_decay_times/|alpha2| against the no-slip motion, fit their "
+        "order in mu0, and the distance between the two centres at t = 1/alpha1. Across the "
+        "layer the "
         "velocities jump: compare the change of v and w of the slipping ball from t = 0 to the "
         "end of the layer (and the Euclidean norm of the change of (vx, vy, wx, wy)) with "
         "the closed-form jump, -k u0/(k+1) in v and i u0/(k+1) in w (complex form, u0 the initial "
@@ -248,7 +249,7 @@ def _convergence(p: dict[str, Any]) -> Outcome:
         )
         layer_err = []
         for mu0 in mu0s:
-            t_layer = np.array([40.0 / abs(float(tt.spectrum(mu0, k).alpha2))])
+            t_layer = np.array([p["layer_decay_times"] / abs(float(tt.spectrum(mu0, k).alpha2))])
             crossed = tt.solve(slipping, t_layer, mu0, k)[0, 2:] - slipping[2:]
             layer_err.append(float(np.abs(crossed - jump).max()))
             # the change of the four velocities (vx, vy, wx, wy), Euclidean norm
@@ -264,7 +265,7 @@ def _convergence(p: dict[str, Any]) -> Outcome:
             pos, vel = [], []
             for mu0 in mu0s:
                 s = tt.spectrum(mu0, k)
-                layer = 40.0 / abs(float(s.alpha2))
+                layer = p["layer_decay_times"] / abs(float(s.alpha2))
                 t = np.union1d(np.linspace(0.0, t_end, 1001), np.linspace(layer, t_end, 1001))
                 z = tt.solve(z0, t, mu0, k)
                 zn = tt.nonholonomic(z0, t, k)
@@ -405,7 +406,8 @@ def _convergence_quantities(p: dict[str, Any], mu0s: list[float]) -> dict[str, Q
             reduce="each",
         ),
         "min_velocity_change_across_layer": Quantity(
-            "|(dvx, dvy, dwx, dwy)| across the initial layer (to t = 40/|alpha2|), " + fig4,
+            "|(dvx, dvy, dwx, dwy)| from t = 0 to the end of the initial layer, t = "
+            f"{p['layer_decay_times']:g}/|alpha2|, " + fig4,
             over={"k": p["k_values"], "mu0": mu0s},
             reduce="min",
         ),

@@ -82,6 +82,27 @@ def test_pdf_names_the_commit_that_built_it_and_links_the_scripts(paper_tree: Pa
     assert not [x for x in links if "/blob/" in x or x == ""], links
 
 
+def test_pdf_says_when_the_claims_record_is_of_another_commit(paper_tree: Path) -> None:
+    """The claims record (attached, the source of every number) names its own commit; the
+    article says so when that is not the commit that built the PDF, and not otherwise."""
+    import typst
+
+    def text() -> str:
+        main = str(paper_tree / "paper" / "paper.typ")
+        return " ".join(typst.compile(main, root=str(paper_tree), format="html").decode().split())
+
+    note = "The claims record was computed at another commit"
+    assert note in text()  # the fixture's build.json names a made-up commit
+    path = paper_tree / "results" / "claims.json"
+    record = json.loads(path.read_text())
+    same = {"git_commit": BUILT_FROM, "git_dirty": True}
+    path.write_text(json.dumps(record | {"provenance": record["provenance"] | same}))
+    try:
+        assert note not in text()
+    finally:
+        path.write_text(json.dumps(record))
+
+
 def test_pdf_is_reproducible_and_carries_the_report(paper_tree: Path) -> None:
     import typst
 

@@ -394,13 +394,13 @@ def _convergence_quantities(p: dict[str, Any], mu0s: list[float]) -> dict[str, Q
             at={"k": k0},
         ),
         "speed_change_across_layer_k_paper": Quantity(
-            "|v| change across the initial layer, " + fig4,
+            "|v(T) - v(0)|, T the end of the initial layer, " + fig4,
             at={"k": k0},
             over={"mu0": mu0s},
             reduce="each",
         ),
         "spin_change_across_layer_k_paper": Quantity(
-            "|w| change across the initial layer, " + fig4,
+            "|w(T) - w(0)|, T the end of the initial layer, " + fig4,
             at={"k": k0},
             over={"mu0": mu0s},
             reduce="each",

@@ -25,7 +25,7 @@ import yaml
 
 from turntable._atomic import write_text
 from turntable._templates import markup, render
-from turntable.claims.report import html_math, summary_line
+from turntable.claims.report import decisive_lines, html_math, summary_line
 from turntable.config import validate
 from turntable.film import EXAMPLE_FILM
 
@@ -93,6 +93,17 @@ def claims_table() -> None:
     )
     summary = summary_line(report["summary"]).replace("`", "``")
     _write("claims.rst", f"{summary}\n\n.. raw:: html\n\n{textwrap.indent(table, '   ')}")
+
+
+#: The claims whose line of ``turntable claims`` the claims guide shows.
+EXAMPLE_CLAIMS = ("solution.centre", "comparison.rolling_resistance")
+
+
+def claims_lines() -> None:
+    """``claims_lines.txt``: the lines of ``turntable claims`` for `EXAMPLE_CLAIMS`."""
+    report = json.loads(_need(ROOT / "results" / "claims.json").read_text(encoding="utf-8"))
+    lines = [line for line in decisive_lines(report) if line.split()[0] in EXAMPLE_CLAIMS]
+    _write("claims_lines.txt", round_floats("\n".join(lines) + "\n"))
 
 
 def _title(name: str) -> str:
@@ -241,5 +252,6 @@ def write_all() -> None:
     citation()
     example_fit()
     claims_table()
+    claims_lines()
     notebooks()
     gallery()

@@ -238,7 +238,7 @@ def modal_terms(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> RollingM
 
 
 def solve(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> NDArray[np.float64]:
-    r"""Return the exact rolling motion z(t) from z0.
+    r"""Return the exact rolling motion :math:`z(t)` from :math:`z_0`.
 
     Parameters
     ----------

@@ -259,7 +259,7 @@ def _limit_reason(c: _Coefficients) -> str:
 
 
 def max_time(mu0: ArrayLike, k: ArrayLike, z0: ArrayLike | None = None) -> NDArray[np.float64]:
-    r"""Return the largest time t at which the solution is representable in doubles.
+    r"""Return the largest time :math:`t` at which the solution is representable in doubles.
 
     Parameters
     ----------

@@ -33,7 +33,7 @@ _J = np.array([[0.0, -1.0], [1.0, 0.0]])
 
 
 def system_matrix(mu0: float, k: float) -> NDArray[np.float64]:
-    r"""Return the 6x6 matrix L of the linear system dz/dt = L z.
+    r"""Return the 6x6 matrix :math:`L` of the linear system :math:`\dot z = L z`.
 
     Parameters
     ----------
@@ -184,7 +184,7 @@ def spectrum(mu0: ArrayLike, k: ArrayLike) -> Spectrum:
 
 
 def eigenvalues(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.complex128]:
-    r"""Return the four nonzero eigenvalues of L.
+    r"""Return the four nonzero eigenvalues of :math:`L`.
 
     Parameters
     ----------

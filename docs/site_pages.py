@@ -96,14 +96,18 @@ def claims_table() -> None:
 
 
 #: The claims whose line of ``turntable claims`` the claims guide shows.
-EXAMPLE_CLAIMS = ("solution.centre", "comparison.rolling_resistance")
+EXAMPLE_CLAIMS = ("model.reduction", "solution.centre")
 
 
 def claims_lines() -> None:
-    """``claims_lines.txt``: the lines of ``turntable claims`` for `EXAMPLE_CLAIMS`."""
+    """``claims_lines.txt``: the lines of ``turntable claims`` for `EXAMPLE_CLAIMS`, their
+    columns aligned among themselves."""
     report = json.loads(_need(ROOT / "results" / "claims.json").read_text(encoding="utf-8"))
-    lines = [line for line in decisive_lines(report) if line.split()[0] in EXAMPLE_CLAIMS]
-    _write("claims_lines.txt", round_floats("\n".join(lines) + "\n"))
+    rows = [line.split(maxsplit=2) for line in decisive_lines(report)]
+    rows = [row for row in rows if row[0] in EXAMPLE_CLAIMS]
+    widths = [max(len(row[i]) for row in rows) for i in (0, 1)]
+    text = "".join(f"{a:<{widths[0]}}  {b:<{widths[1]}}  {c}\n" for a, b, c in rows)
+    _write("claims_lines.txt", round_floats(text))
 
 
 def _title(name: str) -> str:

@@ -24,7 +24,7 @@ COEFFICIENT = {"slipping": "mu0", "rolling_resistance": "delta"}
 N_STATE = {"slipping": 6, "rolling_resistance": 4}
 #: Range searched for each coefficient (the fit stops at these bounds and says so).
 BOUNDS = {"slipping": (1e-6, 1e6), "rolling_resistance": (1e-6, 1e4)}
-#: Fewest coordinates left over, N - K - 1 for the model with more parameters, for which
+#: Fewest coordinates left over, :math:`N - K - 1` for the model with more parameters, for which
 #: a model is selected at all (below it the AICc correction dominates the comparison).
 MIN_DOF = 20
 

@@ -181,11 +181,13 @@ numpydoc_validation_exclude = {
 
 
 def _doc_commented():
-    """Names given a doc comment (#:) in some module of the package."""
-    names = set()
+    """Names given a doc comment (#:) in some module of the package: name to a list of
+    (module, comment lines)."""
+    names = {}
     for info in pkgutil.walk_packages(turntable.__path__, "turntable."):
         with contextlib.suppress(PycodeError):
-            names |= {attr for _, attr in ModuleAnalyzer.for_module(info.name).find_attr_docs()}
+            for (_, attr), doc in ModuleAnalyzer.for_module(info.name).find_attr_docs().items():
+                names.setdefault(attr, []).append((info.name, doc))
     return names
 
 
@@ -201,6 +203,17 @@ class ApiMembers(SphinxDirective):
 
     required_arguments = 1
     commented = _doc_commented()
+
+    def comment(self, module, n):
+        """The doc comment of constant ``n`` of ``module``, where the package writes it
+        (a name imported from another module keeps its comment there)."""
+        places = sorted(self.commented[n], key=lambda place: place[0] != module.__name__)
+        for where, doc in places:
+            if getattr(import_module(where), n, None) is getattr(module, n):
+                doc = list(doc)
+                _plain_bars(None, "data", n, None, None, doc)
+                return doc
+        return []
 
     def run(self):
         name = self.arguments[0]
@@ -225,7 +238,8 @@ class ApiMembers(SphinxDirective):
                 lines += [f".. autoclass:: {name}.{n}", "   :members:", ""]
             else:
                 value = site_pages.round_floats(repr(getattr(module, n)), 6)
-                lines += [f".. autodata:: {name}.{n}", f"   :annotation: = {value}", ""]
+                lines += [f".. py:data:: {n}", f"   :module: {name}", f"   :value: {value}", ""]
+                lines += [f"   {line}" if line else "" for line in self.comment(module, n)]
         container = nodes.container()
         self.state.nested_parse(StringList(lines), self.content_offset, container)
         return container.children

@@ -25,7 +25,7 @@ import yaml
 
 from turntable._atomic import write_text
 from turntable._templates import markup, render
-from turntable.claims.report import html_math, summary_line
+from turntable.claims.report import decisive_lines, html_math, summary_line
 from turntable.config import validate
 from turntable.film import EXAMPLE_FILM
 
@@ -93,6 +93,21 @@ def claims_table() -> None:
     )
     summary = summary_line(report["summary"]).replace("`", "``")
     _write("claims.rst", f"{summary}\n\n.. raw:: html\n\n{textwrap.indent(table, '   ')}")
+
+
+#: The claims whose line of ``turntable claims`` the claims guide shows.
+EXAMPLE_CLAIMS = ("model.reduction", "solution.centre")
+
+
+def claims_lines() -> None:
+    """``claims_lines.txt``: the lines of ``turntable claims`` for `EXAMPLE_CLAIMS`, their
+    columns aligned among themselves."""
+    report = json.loads(_need(ROOT / "results" / "claims.json").read_text(encoding="utf-8"))
+    rows = [line.split(maxsplit=2) for line in decisive_lines(report)]
+    rows = [row for row in rows if row[0] in EXAMPLE_CLAIMS]
+    widths = [max(len(row[i]) for row in rows) for i in (0, 1)]
+    text = "".join(f"{a:<{widths[0]}}  {b:<{widths[1]}}  {c}\n" for a, b, c in rows)
+    _write("claims_lines.txt", round_floats(text))
 
 
 def _title(name: str) -> str:
@@ -241,5 +256,6 @@ def write_all() -> None:
     citation()
     example_fit()
     claims_table()
+    claims_lines()
     notebooks()
     gallery()

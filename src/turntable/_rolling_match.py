@@ -66,11 +66,11 @@ def power_slipping(z: ArrayLike, mu0: float) -> NDArray[np.float64]:
     Notes
     -----
     Section 1 of the paper: :math:`F = -\mu_0 u` at the contact point, which slides
-    with u relative to the plane; in units :math:`m R^2 \Omega^3`.
+    with :math:`u` relative to the plane; in units :math:`m R^2 \Omega^3`.
 
     Examples
     --------
-    A slip of speed 2 at mu0 = 0.5:
+    A slip of speed 2 at :math:`\mu_0 = 0.5`:
 
     >>> from turntable import rolling
     >>> print(rolling.power_slipping([0, 0, 2, 0, 0, 0], 0.5))
@@ -227,7 +227,7 @@ def equal_decay_delta(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
 
     Examples
     --------
-    The rolling centre then decays at the slipping |alpha2|:
+    The rolling centre then decays at the slipping :math:`|\alpha_2|`:
 
     >>> from turntable import rolling, spectrum
     >>> delta = rolling.equal_decay_delta(1.0, 0.4)

@@ -95,14 +95,14 @@ class Film(NamedTuple):
 
 
 class Setup(NamedTuple):
-    """The ball and the turntable.
+    r"""The ball and the turntable.
 
     Attributes
     ----------
     radius : float
         Radius R of the ball, m.
     omega : float
-        Angular velocity Omega of the turntable, rad/s, counterclockwise in the (x, y)
+        Angular velocity :math:`\Omega` of the turntable, rad/s, counterclockwise in the (x, y)
         coordinates of the film (from the x axis towards the y axis).
     k : float
         Inertia ratio :math:`I / (m R^2)` of the ball (2/5 for a homogeneous ball).
@@ -124,7 +124,7 @@ class Setup(NamedTuple):
 
 
 class Camera(NamedTuple):
-    """How the ball is filmed.
+    r"""How the ball is filmed.
 
     Attributes
     ----------
@@ -133,7 +133,8 @@ class Camera(NamedTuple):
     noise : float
         Standard deviation of the tracking error of each coordinate of each frame, m.
     duration : float
-        Length of the film, s; the frames are at t = i / fps, 0 <= t <= duration.
+        Length of the film, s; the frames are at :math:`t = i / \mathrm{fps}`,
+        :math:`0 \le t \le \mathrm{duration}`.
 
     Examples
     --------
@@ -237,7 +238,7 @@ def state_from_si(
     spin: ArrayLike,
     setup: Setup,
 ) -> NDArray[np.float64]:
-    """Return the dimensionless state (x, y, vx, vy, wx, wy) of a ball given in SI units.
+    r"""Return the dimensionless state (x, y, vx, vy, wx, wy) of a ball given in SI units.
 
     Parameters
     ----------
@@ -253,7 +254,7 @@ def state_from_si(
     Returns
     -------
     numpy.ndarray
-        (r - axis) / R, v / (R Omega), w / Omega.
+        :math:`(r - \mathrm{axis}) / R`, :math:`v / (R \Omega)`, :math:`w / \Omega`.
 
     See Also
     --------
@@ -261,13 +262,14 @@ def state_from_si(
 
     Notes
     -----
-    The paper's units (Section 1): length R, time 1/Omega; the spin w is in units of
-    Omega, so that the slip velocity is u = v + gamma x w - gamma x r (the no-slip
-    constraint of a ball on a plane turning at rate 1).
+    The paper's units (Section 1): length :math:`R`, time :math:`1/\Omega`; the spin
+    :math:`w` is in units of :math:`\Omega`, so that the slip velocity is
+    :math:`u = v + \gamma \times w - \gamma \times r` (the no-slip constraint of a ball on
+    a plane turning at rate 1).
 
     Examples
     --------
-    In units of R and 1/Omega: 5 cm from the axis is 10 radii of a 1 cm ball:
+    In units of :math:`R` and :math:`1/\Omega`: 5 cm from the axis is 10 radii of a 1 cm ball:
 
     >>> from turntable.film import Setup, state_from_si
     >>> setup = Setup(radius=0.005, omega=2.0)
@@ -291,14 +293,14 @@ def state_from_si(
 
 
 def state_to_si(state: ArrayLike, setup: Setup) -> dict[str, list[float]]:
-    """Return the dimensionless state as position (m), velocity (m/s), spin (rad/s).
+    r"""Return the dimensionless state as position (m), velocity (m/s), spin (rad/s).
 
     Parameters
     ----------
     state : array_like
         Dimensionless state (x, y, vx, vy, wx, wy).
     setup : Setup
-        Ball and turntable (radius, Omega, axis).
+        Ball and turntable (radius, :math:`\Omega`, axis).
 
     Returns
     -------

@@ -31,7 +31,8 @@ __all__ = ["MAX_DIMENSIONLESS", "InputError", "fit_file", "fitted_film"]
 
 log = logging.getLogger(__name__)
 
-#: Largest |value - axis| / radius (and |t| Omega) accepted: beyond it squares and sums of
+#: Largest :math:`|\mathrm{value} - \mathrm{axis}| / R` (and :math:`|t| \Omega`) accepted:
+#: beyond it squares and sums of
 #: the residuals would come close to overflowing a double.
 MAX_DIMENSIONLESS = 1e100
 
@@ -116,7 +117,7 @@ def fit_file(
         The turntable's rate, rad/s or revolutions per minute; one of them for a film, none
         for a video (whose rate is measured).
     k : float
-        The inertia ratio I / (m R^2).
+        The inertia ratio :math:`I / (m R^2)`.
     axis : tuple of float, optional
         The turntable's axis in the data's coordinates, m; by default (0, 0).
     mass : float, optional

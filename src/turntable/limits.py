@@ -83,7 +83,7 @@ def nonholonomic_period(k: ArrayLike) -> NDArray[np.float64]:
     Notes
     -----
     Equation (3.3): without slip the centre circles about :math:`(x_0, y_0)` of (2.8)
-    at the constant rate :math:`k / (k + 1)` (2/7 of the plane's rate for k = 2/5).
+    at the constant rate :math:`k / (k + 1)` (2/7 of the plane's rate for :math:`k = 2/5`).
 
     Examples
     --------
@@ -103,7 +103,7 @@ def limit_error(z0: ArrayLike, t: ArrayLike, mu0: ArrayLike, k: float) -> NDArra
     z0 : array_like
         Initial state (x, y, vx, vy, wx, wy), on or off the no-slip constraint.
     t : array_like
-        1-D array of times >= 0 on which the distance is sampled.
+        1-D array of non-negative times on which the distance is sampled.
     mu0 : float or array_like
         Friction coefficient(s), finite and > 0.
     k : float
@@ -155,11 +155,12 @@ class LimitErrorFit(NamedTuple):
     mu0 : numpy.ndarray
         The friction coefficients, increasing.
     error : numpy.ndarray
-        `limit_error` on [0, t_end] at each mu0.
+        `limit_error` on :math:`[0, t_\mathrm{end}]` at each :math:`\mu_0`.
     order : float
-        p of the least-squares line :math:`\ln e = \ln c + p \ln \mu_0` (e the error).
+        :math:`p` of the least-squares line :math:`\ln e = \ln c + p \ln \mu_0` (:math:`e` the
+        error).
     prefactor : float
-        c of that line.
+        :math:`c` of that line.
 
     Examples
     --------

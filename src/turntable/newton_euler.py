@@ -76,7 +76,7 @@ def newton_euler(
         Initial planar state (x, y, vx, vy, wx, wy); the centre starts at
         height 1 (one radius above the plane) with vz = 0.
     t : array_like
-        Increasing 1-D array of output times >= 0; integration starts at 0.
+        Increasing 1-D array of non-negative output times; integration starts at 0.
     mu0, k : float
         Friction coefficient and inertia ratio, finite and > 0.
     wz0 : float, optional

@@ -1,10 +1,11 @@
-"""The comparison model: a ball rolling without slipping, with rolling resistance.
+r"""The comparison model: a ball rolling without slipping, with rolling resistance.
 
 The paper (Sec. 2, after Fig. 4) compares its slipping ball with a ball that
 rolls WITHOUT slipping on the turntable and feels a moment of resistance to
 rolling proportional to its angular velocity (ref. [2] of the paper).  This
-module is that second system, in the paper's dimensionless units (length R,
-time 1/Omega, mass m), with z = (x, y, vx, vy, wx, wy) as elsewhere.
+module is that second system, in the paper's dimensionless units (length :math:`R`,
+time :math:`1/\Omega`, mass :math:`m`), with :math:`z = (x, y, v_x, v_y, w_x, w_y)` as
+elsewhere.
 
 The derivation (the model (R1)-(R3), the linear equations (R4), the eigenvalues in closed
 form and the moving centre of the spiral) is in docs/theory.md.
@@ -196,7 +197,7 @@ def modal_terms(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> RollingM
     z0 : array_like
         Initial state on the no-slip constraint (x, y, vx, vy, wx, wy).
     t : array_like
-        1-D array of times >= 0.
+        1-D array of non-negative times.
     delta, k : float
         Rolling-resistance coefficient and inertia ratio, > 0.
 
@@ -237,7 +238,7 @@ def modal_terms(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> RollingM
 
 
 def solve(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> NDArray[np.float64]:
-    r"""Return the exact rolling motion z(t) from z0.
+    r"""Return the exact rolling motion :math:`z(t)` from :math:`z_0`.
 
     Parameters
     ----------
@@ -246,7 +247,7 @@ def solve(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> NDArray[np.flo
         constraint u = 0 (to `SLIP_TOLERANCE` relative to 1 + max |z0|),
         otherwise ValueError names the slip.
     t : array_like
-        1-D array of times >= 0, in any order.
+        1-D array of non-negative times, in any order.
     delta, k : float
         Rolling-resistance coefficient and inertia ratio, finite and > 0.
 
@@ -294,7 +295,7 @@ def spiral_centre(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> NDArra
     z0 : array_like
         Initial state on the no-slip constraint (x, y, vx, vy, wx, wy).
     t : array_like
-        1-D array of times >= 0.
+        1-D array of non-negative times.
     delta, k : float
         Rolling-resistance coefficient and inertia ratio, finite and > 0.
 
@@ -326,9 +327,9 @@ def spiral_centre(z0: ArrayLike, t: ArrayLike, delta: float, k: float) -> NDArra
     return modal_terms(z0, t, delta, k).centre[:, :2]
 
 
-#: The comparisons of the two mechanisms: equal coefficients (delta = mu0), equal dissipated
-#: power on the same path of the centre (each ball with its own spin), equal decay rate of
-#: the non-growing part.
+#: The comparisons of the two mechanisms: equal coefficients (:math:`\delta = \mu_0`), equal
+#: dissipated power on the same path of the centre (each ball with its own spin), equal decay
+#: rate of the non-growing part.
 COMPARISONS = ("equal_coefficient", "equal_power", "equal_decay")
 
 
@@ -346,7 +347,7 @@ def matched_delta(mu0: ArrayLike, k: ArrayLike, comparison: str) -> NDArray[np.f
     Returns
     -------
     numpy.ndarray
-        delta, of the broadcast shape of mu0 and k.
+        :math:`\delta`, of the broadcast shape of ``mu0`` and ``k``.
 
     Examples
     --------
@@ -376,17 +377,18 @@ def growth_per_turn_ratio(mu0: ArrayLike, k: ArrayLike, comparison: str) -> NDAr
     mu0, k : float or array_like
         Slipping friction coefficient and inertia ratio, finite and > 0.
     comparison : {"equal_coefficient", "equal_power", "equal_decay"}
-        How the rolling coefficient is matched to mu0 (`COMPARISONS`, `matched_delta`).
+        How the rolling coefficient is matched to :math:`\mu_0` (`COMPARISONS`,
+        `matched_delta`).
 
     Returns
     -------
     numpy.ndarray
-        The ratio, of the broadcast shape of mu0 and k.
+        The ratio, of the broadcast shape of ``mu0`` and ``k``.
 
     Notes
     -----
     :math:`(2\pi \alpha_1 / \beta)(\mu_0) / (2\pi \sigma_g / \nu_g)(\delta)`,
-    :math:`\delta` = `matched_delta` (mu0, k, comparison).  Limits for large
+    :math:`\delta` from ``matched_delta(mu0, k, comparison)``.  Limits for large
     :math:`\mu_0`: :math:`k^2 / (k + 1)^2` (equal coefficients), 1 (equal power),
     :math:`k` (equal decay).
 
@@ -452,7 +454,7 @@ def newton_euler(
         Initial planar state on the no-slip constraint; the centre starts at
         height 1 with vz = 0.
     t : array_like
-        Increasing 1-D array of output times >= 0.
+        Increasing 1-D array of non-negative output times.
     delta, k : float
         Rolling-resistance coefficient and inertia ratio, > 0.
     torque : {"horizontal", "full", "relative"}

@@ -151,7 +151,7 @@ def solve(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> NDArray[np.float
     z0 : array_like
         Initial state (x, y, vx, vy, wx, wy).
     t : array_like
-        1-D array of times >= 0 (in units of 1/Omega), in any order.
+        1-D array of non-negative times (in units of :math:`1/\Omega`), in any order.
     mu0, k : float
         Friction coefficient and inertia ratio, finite and > 0.
 
@@ -163,7 +163,7 @@ def solve(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> NDArray[np.float
     Raises
     ------
     ValueError
-        For a bad argument, or a time beyond `max_time` (mu0, k, z0), where
+        For a bad argument, or a time beyond ``max_time(mu0, k, z0)``, where
         the growing part :math:`e^{\alpha_1 t}` of the solution overflows a double; the
         message names that largest time.
 
@@ -259,7 +259,7 @@ def _limit_reason(c: _Coefficients) -> str:
 
 
 def max_time(mu0: ArrayLike, k: ArrayLike, z0: ArrayLike | None = None) -> NDArray[np.float64]:
-    r"""Return the largest time t at which the solution is representable in doubles.
+    r"""Return the largest time :math:`t` at which the solution is representable in doubles.
 
     Parameters
     ----------
@@ -361,7 +361,7 @@ def modal_terms(z0: ArrayLike, t: ArrayLike, mu0: float, k: float) -> ModalTerms
     z0 : array_like
         Initial state (x, y, vx, vy, wx, wy).
     t : array_like
-        1-D array of times >= 0.
+        1-D array of non-negative times.
     mu0, k : float
         Friction coefficient and inertia ratio, finite and > 0.
 
@@ -497,7 +497,7 @@ def nonholonomic(z0: ArrayLike, t: ArrayLike, k: float) -> NDArray[np.float64]:
         constraint, the motion starts from `no_slip_state` (z0): the state
         after the initial layer, with the same r(0) and conserved quantities.
     t : array_like
-        1-D array of times >= 0.
+        1-D array of non-negative times.
     k : float
         Inertia ratio, > 0.
 

@@ -1,7 +1,7 @@
-"""The linear system (1.7) and its spectrum (2.1)-(2.6), (2.9)-(2.10), (3.2).
+r"""The linear system (1.7) and its spectrum (2.1)-(2.6), (2.9)-(2.10), (3.2).
 
-All quantities are dimensionless: length R, time 1/Omega, mass m, so that
-``mu0`` stands for mu0 / (m Omega) and ``k`` for I / (m R^2).
+All quantities are dimensionless: length :math:`R`, time :math:`1/\Omega`, mass :math:`m`,
+so that ``mu0`` stands for :math:`\mu_0 / (m \Omega)` and ``k`` for :math:`I / (m R^2)`.
 
 The closed forms are rewritten so that no step subtracts nearly equal
 numbers.  With ``h = sqrt(1 + eps^2)``, ``a = sqrt((h + 1) / 2)`` and the
@@ -24,7 +24,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from turntable import _validate
 
-#: The golden ratio; alpha1 peaks where a = (1 + sqrt 5) / 2 (see `alpha1_peak`).
+#: The golden ratio; :math:`\alpha_1` peaks where :math:`a = (1 + \sqrt 5) / 2` (see
+#: `alpha1_peak`).
 GOLDEN = (1.0 + np.sqrt(5.0)) / 2.0
 
 _I2 = np.eye(2)
@@ -32,7 +33,7 @@ _J = np.array([[0.0, -1.0], [1.0, 0.0]])
 
 
 def system_matrix(mu0: float, k: float) -> NDArray[np.float64]:
-    r"""Return the 6x6 matrix L of the linear system dz/dt = L z.
+    r"""Return the 6x6 matrix :math:`L` of the linear system :math:`\dot z = L z`.
 
     Parameters
     ----------
@@ -183,7 +184,7 @@ def spectrum(mu0: ArrayLike, k: ArrayLike) -> Spectrum:
 
 
 def eigenvalues(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.complex128]:
-    r"""Return the four nonzero eigenvalues of L.
+    r"""Return the four nonzero eigenvalues of :math:`L`.
 
     Parameters
     ----------
@@ -208,7 +209,7 @@ def eigenvalues(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.complex128]:
     Equation (2.4): :math:`\lambda_{1,2} = \mu (-1 + \sqrt{1 \pm i\varepsilon})` and
     :math:`\lambda_{3,4} = \mu (-1 - \sqrt{1 \pm i\varepsilon})`; each real and imaginary part
     has a relative error of a few units in the last place for all
-    mu0, k > 0 (see ``benchmarks/``).
+    :math:`\mu_0, k > 0` (see ``benchmarks/``).
 
     Examples
     --------
@@ -232,7 +233,7 @@ def eigenvalues(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.complex128]:
 
 
 def log_damping_ratio(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
-    r"""Return ln N, the logarithm of the decay of z- over one period.
+    r"""Return :math:`\ln N`, the logarithm of the decay of :math:`z_-` over one period.
 
     Parameters
     ----------
@@ -255,7 +256,7 @@ def log_damping_ratio(mu0: ArrayLike, k: ArrayLike) -> NDArray[np.float64]:
 
     Examples
     --------
-    Above the bound 2 pi for every mu0 (here k = 2/5):
+    Above the bound :math:`2\pi` for every :math:`\mu_0` (here :math:`k = 2/5`):
 
     >>> import numpy as np
     >>> from turntable import log_damping_ratio
@@ -304,7 +305,7 @@ class Peak(NamedTuple):
 
     Examples
     --------
-    The largest growth rate at k = 0.4 (Figure 2):
+    The largest growth rate at :math:`k = 0.4` (Figure 2):
 
     >>> from turntable import alpha1_peak
     >>> peak = alpha1_peak(0.4)
@@ -342,7 +343,7 @@ def alpha1_peak(k: ArrayLike) -> Peak:
     In terms of a of (2.5),
     :math:`\alpha_1 = \frac{k}{k + 1} \sqrt{(a - 1)/(a + 1)} / a`,
     whose logarithmic derivative vanishes where :math:`a^2 - a - 1 = 0`, i.e.
-    :math:`a = \varphi`.  For k = 2/5 the peak is at :math:`\mu_0 = 0.0793`.
+    :math:`a = \varphi`.  For :math:`k = 2/5` the peak is at :math:`\mu_0 = 0.0793`.
 
     Examples
     --------

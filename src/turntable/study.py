@@ -38,7 +38,7 @@ def section2_checks(k: float, mu0: ArrayLike, z0: ArrayLike, t: ArrayLike) -> di
     z0 : array_like
         Initial state (x, y, vx, vy, wx, wy) of the trajectory checks.
     t : array_like
-        1-D array of times >= 0 on which the trajectory checks sample `solve`.
+        1-D array of non-negative times on which the trajectory checks sample `solve`.
 
     Returns
     -------

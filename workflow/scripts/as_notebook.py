@@ -9,6 +9,7 @@ ids, kernel flags and no timings make two runs write the same bytes.
 import os
 import pprint
 import shutil
+from fractions import Fraction
 from pathlib import Path
 
 import jupytext
@@ -31,9 +32,21 @@ def plain(items, files=True):
     return fromdict(named)
 
 
+class Printer(pprint.PrettyPrinter):
+    """pprint, with a float that is a fraction of small integers written as one: ``100 / 3``
+    for 33.333333333333336, the same number."""
+
+    def format(self, obj, context, maxlevels, level):
+        if type(obj) is float and len(repr(obj)) > 12:
+            fraction = Fraction(obj).limit_denominator(1000)
+            if fraction.numerator / fraction.denominator == obj:
+                return f"{fraction.numerator} / {fraction.denominator}", True, False
+        return super().format(obj, context, maxlevels, level)
+
+
 def fromdict(named):
     """`Namedlist(fromdict=...)` source of a dict."""
-    text = pprint.pformat(named, width=70, sort_dicts=False).replace("\n", "\n" + " " * 17)
+    text = Printer(width=70, sort_dicts=False).pformat(named).replace("\n", "\n" + " " * 17)
     return f"Namedlist(\n        fromdict={text},\n    )"
 
 

@@ -30,7 +30,7 @@ The modules, one concern each: ``models`` (the models' positions and parameter c
 shared with ``simulate``, the synthetic films), ``parameters`` (the parameter vector and the
 Jacobian), ``start`` (start values), ``results`` (what a fit returns; AICc and whiteness),
 ``lsq`` (the fits), ``response`` (how a coefficient follows a change of its film),
-``diagnose`` (consistency of Omega and the axis, problems), `io` (the JSON of ``turntable
+``diagnose`` (consistency of :math:`\Omega` and the axis, problems), `io` (the JSON of ``turntable
 fit`` and reading it back), ``design`` (predicted errors, distinguishability,
 measurability) and ``plot`` (drawing a fit; matplotlib is imported there only).  Their public
 names are importable from `turntable.fit`.

@@ -68,7 +68,7 @@ def predicted_stderr(
     ----------
     model : {"slipping", "rolling_resistance"}
     coefficient : float
-        True mu0 or delta (dimensionless).
+        True :math:`\mu_0` or :math:`\delta` (dimensionless).
     state0 : array_like
         True dimensionless state at the first frame (on the no-slip constraint for the
         rolling model; `turntable.no_slip_state` projects one there).
@@ -77,7 +77,7 @@ def predicted_stderr(
     camera : Camera
         Frame rate, tracking noise (m per coordinate) and duration.
     fit_omega, fit_axis : bool
-        Whether Omega (and, rolling, the axis) are fitted too, i.e. nuisance parameters.
+        Whether :math:`\Omega` (and, rolling, the axis) are fitted too, i.e. nuisance parameters.
 
     Returns
     -------
@@ -262,10 +262,10 @@ class Measurability(NamedTuple):
     Attributes
     ----------
     mu0, mu0_stderr : numpy.ndarray
-        The grid and the predicted standard error of mu0 for a slipping ball.
+        The grid and the predicted standard error of :math:`\mu_0` for a slipping ball.
     delta_stderr : numpy.ndarray
-        Predicted standard error of delta for a rolling ball with delta equal to the
-        grid's value.
+        Predicted standard error of :math:`\delta` for a rolling ball with :math:`\delta`
+        equal to the grid's value.
     closest_delta, rms_distance, expected_aicc_difference, selection_probability
         `Distinguishability` of each slipping ball from the closest rolling motion.
 
@@ -312,9 +312,9 @@ def measurability(
     Returns
     -------
     Measurability
-        For each mu0: `predicted_stderr` of mu0; for delta equal to it, the rolling
-        ball's `predicted_stderr` of delta; and the `distinguishability` of the slipping
-        ball from the closest rolling motion.
+        For each :math:`\mu_0`: `predicted_stderr` of :math:`\mu_0`; for :math:`\delta`
+        equal to it, the rolling ball's `predicted_stderr` of :math:`\delta`; and the
+        `distinguishability` of the slipping ball from the closest rolling motion.
 
     See Also
     --------
@@ -360,7 +360,7 @@ def indistinguishable_above(table: Measurability, probability: float) -> float:
     Parameters
     ----------
     table : Measurability
-        From `measurability`, on an increasing grid of mu0.
+        From `measurability`, on an increasing grid of :math:`\mu_0`.
     probability : float
         Required probability of selecting the slipping model, in :math:`(e^{-2}, 1)`.
 
@@ -368,7 +368,8 @@ def indistinguishable_above(table: Measurability, probability: float) -> float:
     -------
     float
         The crossing of the selection probability with ``probability`` after the last
-        grid point where it is at least ``probability``, interpolated linearly in ln mu0;
+        grid point where it is at least ``probability``, interpolated linearly in
+        :math:`\ln \mu_0`;
         inf if the last grid point is still above, the first grid value if none is.
 
     Examples
@@ -407,7 +408,7 @@ def reliable_range(
     mu0 : array_like
         Increasing grid.
     relative_stderr : array_like
-        Predicted se(mu0) / mu0 on the grid (`Measurability`).
+        Predicted :math:`\mathrm{se}(\mu_0) / \mu_0` on the grid (`Measurability`).
     level : float
         Largest relative error for which the Cramer-Rao bound is taken as reached (the
         fit is then locally linear; config ``fig8_measurability.reliable_relative_error``).
@@ -416,8 +417,8 @@ def reliable_range(
     -------
     (low, high) or None
         The longest run of grid points below ``level``, its ends interpolated linearly in
-        (ln mu0, ln relative error) to the crossings (a grid end if no crossing); None if
-        no grid point is below ``level``.
+        (:math:`\ln \mu_0`, :math:`\ln` of the relative error) to the crossings (a grid end if no
+        crossing); None if no grid point is below ``level``.
 
     Examples
     --------
@@ -455,7 +456,7 @@ def measurability_json(
 ) -> dict[str, Any]:
     """Return `measurability` results as a JSON object (lists), with the set-up, the
     `indistinguishable_above` value for ``probability`` and, with ``reliable_level``, the
-    `reliable_range` of mu0 where the predicted relative error is below it.
+    `reliable_range` of ``mu0`` where the predicted relative error is below it.
 
     ``rig`` is a `turntable.film.Rig` (set-up, camera, start state, mass).
 

@@ -1,6 +1,6 @@
-"""What a user must know about a fit: consistency of the given Omega and axis, problems.
+r"""What a user must know about a fit: consistency of the given :math:`\Omega` and axis, problems.
 
-`consistency` refits with Omega (and the axis) free; `checked_selection` withdraws a
+`consistency` refits with :math:`\Omega` (and the axis) free; `checked_selection` withdraws a
 selection that the refit contradicts; `problems` lists in one line each what a user must
 know about a fit.
 """
@@ -17,16 +17,16 @@ from turntable.fit.lsq import OMEGA_FACTOR, fit_film
 from turntable.fit.models import BOUNDS, COEFFICIENT
 from turntable.fit.results import FilmFit
 
-#: Relative standard error (of ln c) above which a fit is not locally linear: its standard
+#: Relative standard error (of :math:`\ln c`) above which a fit is not locally linear: its standard
 #: error and interval are then only indicative (Fig. 8: fits reach the Cramer-Rao bound
 #: below about this, and beyond a few times it their intervals miss the truth in up to half
 #: the films); `problems` says so.
 LINEAR_RELATIVE_ERROR = 0.2
-#: A freed Omega or axis (`consistency`) farther than this many standard errors from the
+#: A freed :math:`\Omega` or axis (`consistency`) farther than this many standard errors from the
 #: given value means the given one is wrong (false alarm about 6e-5 when it is right).
 CONSISTENCY_Z = 4.0
-#: Frames farther apart than this in Omega t (rad) cannot follow the ball (it turns at a
-#: rate up to Omega): the time unit or the rate is probably wrong.
+#: Frames farther apart than this in :math:`\Omega t` (rad) cannot follow the ball (it
+#: turns at a rate up to :math:`\Omega`): the time unit or the rate is probably wrong.
 MAX_FRAME_STEP = 1.0
 
 
@@ -38,7 +38,7 @@ def frame_step(film: Film, setup: Setup) -> float:
     film : Film
         The film (its frame times).
     setup : Setup
-        Ball and turntable (Omega).
+        Ball and turntable (:math:`\Omega`).
 
     Returns
     -------
@@ -74,10 +74,11 @@ class Consistency(NamedTuple):
         The model judged: the one selected by the fit that is checked, else the one
         ``refit`` selects, else the one of smaller RSS.  (Not simply the one ``refit``
         selects: with the axis free the rolling model can mimic a slipping ball of large
-        mu0, whose spiral centre it takes for the axis, and ``refit`` may then prefer it,
+        :math:`\mu_0`, whose spiral centre it takes for the axis, and ``refit`` may then prefer it,
         not decisively, with an axis far from the given one.)
     omega_z : float
-        (Omega fitted - Omega given) / its standard error for that model (nan if Omega was
+        :math:`\Omega_\mathrm{fitted} - \Omega_\mathrm{given}` over its standard error for that
+        model (nan if :math:`\Omega` was
         fitted anyway, or its error is not finite).
     axis_z : tuple of float
         The same for each coordinate of the axis (nan unless the judged model is the
@@ -132,14 +133,14 @@ def consistency(
 
     Notes
     -----
-    The whiteness of the residuals (`whiteness`) detects a wrong Omega or axis only when
+    The whiteness of the residuals (`whiteness`) detects a wrong :math:`\Omega` or axis only when
     the error it leaves is larger than the noise; a small error is partly absorbed by the
-    coefficient, the initial state, or the other model (a 0.4 % error in Omega on a film of
+    coefficient, the initial state, or the other model (a 0.4 % error in :math:`\Omega` on a film of
     30 frames/s, 6 s, 0.3 mm noise made the rolling model fit a slipping film with white
-    residuals).  The direct test is the fit with Omega (and the axis) free: if the given
+    residuals).  The direct test is the fit with :math:`\Omega` (and the axis) free: if the given
     value is right, the fitted one scatters about it by its standard error, and
-    |z| > `CONSISTENCY_Z` happens with probability 6e-5.  Where the wrong Omega has made
-    the other model win, the refit selects the right one again (``selection_changed`` if
+    :math:`|z| >` `CONSISTENCY_Z` happens with probability 6e-5.  Where the wrong :math:`\Omega` has
+    made the other model win, the refit selects the right one again (``selection_changed`` if
     it does so decisively).
 
     Examples
@@ -179,13 +180,13 @@ def consistency(
 
 
 def undescribed(result: FilmFit) -> str:
-    """Why the selected model does not describe the film ("" if it does, or none is selected).
+    r"""Why the selected model does not describe the film ("" if it does, or none is selected).
 
     A selection rests on the selected model fitting the film to its noise: residuals that
     are correlated from frame to frame (`whiteness`) and far above the film's noise
     (`ModelFit.describes`) leave structure that neither model follows, and a coefficient
     at the end of its search range is no measurement (a ball moving in a straight line is
-    the slipping model's mu0 -> 0, but not a friction).  The AICc difference then weighs
+    the slipping model's :math:`\mu_0 \to 0`, but not a friction).  The AICc difference then weighs
     two wrong models, and says nothing about the friction.
 
     Parameters
@@ -235,12 +236,12 @@ def undescribed(result: FilmFit) -> str:
 
 
 def checked_selection(result: FilmFit, check: Consistency | None) -> FilmFit:
-    """Return the fit with its selection not decisive where `consistency` contradicts it.
+    r"""Return the fit with its selection not decisive where `consistency` contradicts it.
 
     Parameters
     ----------
     result : FilmFit
-        The fit with the given Omega and axis.
+        The fit with the given :math:`\Omega` and axis.
     check : Consistency or None
         The same fit with them free (`consistency`).
 
@@ -248,11 +249,11 @@ def checked_selection(result: FilmFit, check: Consistency | None) -> FilmFit:
     -------
     FilmFit
         ``result`` itself, unless its selection is decisive and the check finds the given
-        Omega or axis more than `CONSISTENCY_Z` standard errors from the ones the film
+        :math:`\Omega` or axis more than `CONSISTENCY_Z` standard errors from the ones the film
         prefers, or selects another model decisively with them free: then a copy with
         ``decisive`` False and ``reason`` saying why; and a copy with ``decisive`` False
         wherever the selected model does not describe the film (`undescribed`).  (A wrong
-        Omega can make the wrong
+        :math:`\Omega` can make the wrong
         model win by a large AICc difference: the difference then measures the fit to the
         wrong rate, not the evidence for the model.)
 
@@ -301,32 +302,32 @@ def checked_selection(result: FilmFit, check: Consistency | None) -> FilmFit:
 def problems(
     result: FilmFit, film: Film, setup: Setup, check: Consistency | None = None
 ) -> list[str]:
-    """Return what a user must know about a fit, one line each (empty if nothing).
+    r"""Return what a user must know about a fit, one line each (empty if nothing).
 
     Parameters
     ----------
     result : FilmFit
     film : Film
     setup : Setup
-        As given to `fit_film` (Omega before any fit of it).
+        As given to `fit_film` (:math:`\Omega` before any fit of it).
     check : Consistency, optional
-        The fit repeated with Omega and the axis free (`consistency`).
+        The fit repeated with :math:`\Omega` and the axis free (`consistency`).
 
     Returns
     -------
     list of str
         In this order, each where it applies: frames too far apart to follow the ball
-        (Omega dt above `MAX_FRAME_STEP`: a time unit or rate mistake); each fit that did
-        not converge; each coefficient at a bound of `BOUNDS`, with its one-sided limit;
-        each fitted Omega at the end of its range; a selection that is not decisive or not
+        (:math:`\Omega\, \Delta t` above `MAX_FRAME_STEP`: a time unit or rate mistake); each fit
+        that did not converge; each coefficient at a bound of `BOUNDS`, with its one-sided limit;
+        each fitted :math:`\Omega` at the end of its range; a selection that is not decisive or not
         made (``FilmFit.reason``); a relative standard error above `LINEAR_RELATIVE_ERROR`
         of the selected model (of each, with none selected or a selection that is not
         decisive, `checked_selection`); residuals of the selected
         model (or, with none selected,
         of the better fit) that are not white noise (`whiteness`): far above the film's
         noise, neither model fits to the noise level (`ModelFit.describes`), at it, a
-        tracker's correlated errors or a small misfit; with ``check``, a given Omega or axis more
-        than `CONSISTENCY_Z` standard errors from the one the film prefers (judged on the
+        tracker's correlated errors or a small misfit; with ``check``, a given :math:`\Omega` or
+        axis more than `CONSISTENCY_Z` standard errors from the one the film prefers (judged on the
         model selected, if decisively), and a selection that changes decisively when they
         are free.
 

@@ -47,7 +47,7 @@ def result_json(
     source : str
         Name of the data file.
     check : Consistency, optional
-        The fit repeated with Omega and the axis free (`consistency`), reported under
+        The fit repeated with :math:`\Omega` and the axis free (`consistency`), reported under
         "consistency" and in the warnings.
 
     Returns
@@ -241,9 +241,9 @@ def result_json(
 
 
 def setup_from_json(result: dict[str, Any], model: str | None = None) -> Setup:
-    """Return the `~turntable.film.Setup` recorded in a result of `result_json` (``turntable fit``).
+    r"""Return the `~turntable.film.Setup` recorded in a `result_json` (``turntable fit``).
 
-    With ``model``, Omega and the axis are that model's (fitted ones with ``--fit-omega``,
+    With ``model``, :math:`\Omega` and the axis are that model's (fitted ones with ``--fit-omega``,
     ``--fit-axis``).
 
     Parameters
@@ -251,7 +251,7 @@ def setup_from_json(result: dict[str, Any], model: str | None = None) -> Setup:
     result : dict
         A result of `result_json` (``turntable fit``), read back from JSON.
     model : {"slipping", "rolling_resistance"}, optional
-        The model whose Omega and axis are taken; by default the given ones.
+        The model whose :math:`\Omega` and axis are taken; by default the given ones.
 
     Returns
     -------
@@ -313,7 +313,7 @@ def fitted_coefficient(result: dict[str, Any], model: str) -> float:
 
 
 def fitted_positions(result: dict[str, Any], model: str, t: ArrayLike) -> NDArray[np.float64]:
-    """Return the positions (m) of one fitted model of a `result_json` at times ``t`` (s).
+    r"""Return the positions (m) of one fitted model of a `result_json` at times ``t`` (s).
 
     Parameters
     ----------
@@ -326,8 +326,8 @@ def fitted_positions(result: dict[str, Any], model: str, t: ArrayLike) -> NDArra
     Returns
     -------
     numpy.ndarray
-        Shape (len(t), 2), from `positions` with the fitted coefficient, state0, Omega
-        and axis.
+        Shape (len(t), 2), from `positions` with the fitted coefficient, ``state0``,
+        :math:`\Omega` and axis.
 
     Raises
     ------

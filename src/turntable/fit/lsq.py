@@ -58,7 +58,7 @@ from turntable.fit.results import (
 from turntable.fit.start import _rates, start_values
 from turntable.solution import max_time
 
-#: With ``fit_omega``, Omega is searched within this factor of the given value.
+#: With ``fit_omega``, :math:`\Omega` is searched within this factor of the given value.
 OMEGA_FACTOR = 2.0
 #: Residual of a trial point whose solution would overflow a double (see `max_time`).
 _OVERFLOW_RESIDUAL = 1e100
@@ -216,10 +216,10 @@ def _limit(fitter: _Fitter, theta: NDArray[np.float64], rss: float, bound: str) 
 def _least_squares(
     film: Film, setup: Setup, lay: _Layout
 ) -> tuple[_Fitter, Any, NDArray[np.float64], NDArray[np.float64]]:
-    """The least-squares fit of `fit_model`, without its standard errors and limits.
+    r"""The least-squares fit of `fit_model`, without its standard errors and limits.
 
-    Returns the problem, the optimiser's result, the parameters (ln c and ln Omega held
-    inside their ranges) and the residuals there (m).
+    Returns the problem, the optimiser's result, the parameters (:math:`\ln c` and
+    :math:`\ln \Omega` held inside their ranges) and the residuals there (m).
     """
     tau, xy = _dimensionless(film, setup)
     n_obs, p = 2 * tau.size, lay.size
@@ -255,7 +255,7 @@ def fit_model(
     fit_omega: bool = False,
     fit_axis: bool = False,
 ) -> ModelFit:
-    """Fit one model to a film by nonlinear least squares on its exact solution.
+    r"""Fit one model to a film by nonlinear least squares on its exact solution.
 
     Parameters
     ----------
@@ -265,7 +265,7 @@ def fit_model(
         Ball radius, turntable rate, inertia ratio and axis position.
     model : {"slipping", "rolling_resistance"}
     fit_omega : bool
-        Fit Omega too (from ``setup.omega``, within a factor `OMEGA_FACTOR`).
+        Fit :math:`\Omega` too (from ``setup.omega``, within a factor `OMEGA_FACTOR`).
     fit_axis : bool
         Fit the position of the axis too (from ``setup.axis``); only the rolling model
         depends on it.
@@ -285,12 +285,12 @@ def fit_model(
 
     Notes
     -----
-    Residuals R (r(tau_i) + a - r_i) in m, r from `turntable.solve` (2.7) or
-    `turntable.rolling.solve`, tau_i = Omega (t_i - t_0); parameters the initial state and
-    ln c, and ln Omega, a if asked (module docstring).  A trial point at which the solution
-    would overflow a double over the film (`turntable.max_time`, relevant only for very long
-    films) gets a huge residual, so the optimiser steps back.  A coefficient at a bound of
-    `BOUNDS` gets a one-sided 95 % limit (``_limit``).
+    Residuals :math:`R\,(r(\tau_i) + a - r_i)` in m, :math:`r` from `turntable.solve` (2.7) or
+    `turntable.rolling.solve`, :math:`\tau_i = \Omega (t_i - t_0)`; parameters the initial
+    state and :math:`\ln c`, and :math:`\ln \Omega`, :math:`a` if asked (module docstring).  A trial
+    point at which the solution would overflow a double over the film (`turntable.max_time`,
+    relevant only for very long films) gets a huge residual, so the optimiser steps back.  A
+    coefficient at a bound of `BOUNDS` gets a one-sided 95 % limit (``_limit``).
 
     Examples
     --------

@@ -24,7 +24,7 @@ COEFFICIENT = {"slipping": "mu0", "rolling_resistance": "delta"}
 N_STATE = {"slipping": 6, "rolling_resistance": 4}
 #: Range searched for each coefficient (the fit stops at these bounds and says so).
 BOUNDS = {"slipping": (1e-6, 1e6), "rolling_resistance": (1e-6, 1e4)}
-#: Fewest coordinates left over, N - K - 1 for the model with more parameters, for which
+#: Fewest coordinates left over, :math:`N - K - 1` for the model with more parameters, for which
 #: a model is selected at all (below it the AICc correction dominates the comparison).
 MIN_DOF = 20
 
@@ -41,9 +41,10 @@ def _axis_free(model: str, fit_axis: bool) -> bool:
 
 
 def n_parameters(model: str, fit_omega: bool = False, fit_axis: bool = False) -> int:
-    """Return the number p of fitted parameters of ``model``.
+    r"""Return the number p of fitted parameters of ``model``.
 
-    The initial state (6 for slipping, 4 for rolling), ln c, and with ``fit_omega`` ln Omega,
+    The initial state (6 for slipping, 4 for rolling), :math:`\ln c`, and with ``fit_omega``
+    :math:`\ln \Omega`,
     with ``fit_axis`` the axis (x, y) of the rolling model (the slipping model does not
     depend on the axis).
 
@@ -52,7 +53,7 @@ def n_parameters(model: str, fit_omega: bool = False, fit_axis: bool = False) ->
     model : {"slipping", "rolling_resistance"}
         The model.
     fit_omega, fit_axis : bool, optional
-        Whether Omega and (for the rolling model) the axis are fitted too.
+        Whether :math:`\Omega` and (for the rolling model) the axis are fitted too.
 
     Returns
     -------
@@ -61,7 +62,8 @@ def n_parameters(model: str, fit_omega: bool = False, fit_axis: bool = False) ->
 
     Examples
     --------
-    The coefficient and the initial state (6 numbers slipping, 4 rolling), and Omega if free:
+    The coefficient and the initial state (6 numbers slipping, 4 rolling), and :math:`\Omega` if
+    free:
 
     >>> from turntable import fit
     >>> fit.n_parameters("slipping"), fit.n_parameters("rolling_resistance", fit_omega=True)
@@ -71,15 +73,16 @@ def n_parameters(model: str, fit_omega: bool = False, fit_axis: bool = False) ->
 
 
 def min_frames(fit_omega: bool = False, fit_axis: bool = False) -> int:
-    """Return the fewest frames n for which `fit_film` selects a model.
+    r"""Return the fewest frames n for which `fit_film` selects a model.
 
-    Each frame gives N = 2 n coordinates; AICc needs N - K - 1 >= `MIN_DOF` with
-    K = p + 1 for the model with the most parameters p (`n_parameters`).
+    Each frame gives :math:`N = 2n` coordinates; AICc needs :math:`N - K - 1 \ge`
+    `MIN_DOF` with :math:`K = p + 1` for the model with the most parameters :math:`p`
+    (`n_parameters`).
 
     Parameters
     ----------
     fit_omega, fit_axis : bool, optional
-        Whether Omega and (for the rolling model) the axis are fitted too.
+        Whether :math:`\Omega` and (for the rolling model) the axis are fitted too.
 
     Returns
     -------
@@ -119,20 +122,20 @@ def positions(
     setup: Setup,
     t0: float = 0.0,
 ) -> NDArray[np.float64]:
-    """Return the positions (x, y) in m of the ball's centre at times ``t``, s.
+    r"""Return the positions (x, y) in m of the ball's centre at times ``t``, s.
 
     Parameters
     ----------
     model : {"slipping", "rolling_resistance"}
         Which mechanism.
     coefficient : float
-        mu0 or delta, dimensionless, > 0.
+        :math:`\mu_0` or :math:`\delta`, dimensionless, > 0.
     state0 : array_like
         Dimensionless state (x, y, vx, vy, wx, wy) at time ``t0`` (units of the paper:
-        length R, time 1/Omega, relative to the axis); on the no-slip constraint for the
-        rolling model.
+        length :math:`R`, time :math:`1/\Omega`, relative to the axis); on the no-slip constraint
+        for the rolling model.
     t : array_like
-        Times in s, >= t0.
+        Times in s, from ``t0`` on.
     setup : Setup
         Ball and turntable.
     t0 : float
@@ -141,8 +144,8 @@ def positions(
     Returns
     -------
     numpy.ndarray
-        Shape (len(t), 2): axis + R r(Omega (t - t0)) with r from `turntable.solve` or
-        `turntable.rolling.solve`.
+        Shape (len(t), 2): :math:`\mathrm{axis} + R\, r(\Omega (t - t_0))` with :math:`r` from
+        `turntable.solve` or `turntable.rolling.solve`.
 
     Examples
     --------

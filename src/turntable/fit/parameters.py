@@ -21,7 +21,8 @@ from turntable.fit.models import N_STATE, _axis_free, _check_model, _full_state,
 
 #: A slow part of the errors (`slow_noise`) is one this many times its spread for white noise.
 DRIFT_Z = 3.0
-#: Relative step in ln c of the central difference for the coefficient's column of J.
+#: Relative step in :math:`\ln c` of the central difference for the coefficient's column of
+#: :math:`J`.
 LOG_STEP = 1e-5
 
 

@@ -1,11 +1,11 @@
-"""What a fit returns, and the criteria that compare and judge fits.
+r"""What a fit returns, and the criteria that compare and judge fits.
 
 The models are compared by the small-sample corrected Akaike criterion
 AICc = N ln(RSS / N) + 2 K + 2 K (K + 1) / (N - K - 1), K = p + 1 (Gaussian noise of
 unknown variance, the + 1), reported with the difference and the Akaike weights; a
 difference below `DECISIVE` is not decisive.  Whether a model fits to the noise level is
 told by the lag-1 autocorrelation of its residuals (`whiteness`): white noise gives about
-0 with a spread of 1 / sqrt(number of pairs); a wrong Omega, k, axis or sign of y leaves
+0 with a spread of 1 / sqrt(number of pairs); a wrong :math:`\Omega`, k, axis or sign of y leaves
 smooth structure and a large positive value.
 """
 
@@ -18,18 +18,19 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-#: Two-sided 95 % quantile of the normal distribution (the `*_ci95` intervals).
+#: Two-sided 95 % quantile of the normal distribution (the ``*_ci95`` intervals).
 Z95 = NormalDist().inv_cdf(0.975)
 #: AICc differences of at least this much are decisive (Burnham and Anderson: above 10,
 #: essentially no support for the other model).
 DECISIVE = 10.0
 #: Residuals count as not white when their lag-1 autocorrelation exceeds this many times
-#: its spread 1 / sqrt(pairs) for white noise (false alarm about 3e-5 for white noise).
+#: its spread :math:`1 / \sqrt{\mathrm{pairs}}` for white noise (false alarm about 3e-5 for white
+#: noise).
 WHITENESS_Z = 4.0
 #: Correlated residuals whose rms is more than this many times the film's frame-to-frame
 #: noise (`frame_noise`) mean that the model does not describe the film; a tracker's
 #: correlated errors stay below (at most 1.9 times on 30 rendered videos).  A small misfit
-#: can too (a rate 0.4 % off: 1.3 times): the check with Omega free catches that one.
+#: can too (a rate 0.4 % off: 1.3 times): the check with :math:`\Omega` free catches that one.
 NOISE_FACTOR = 3.0
 
 
@@ -41,13 +42,13 @@ class ModelFit(NamedTuple):
     model : str
         "slipping" or "rolling_resistance".
     coefficient, stderr : float
-        The dimensionless coefficient (mu0 or delta) and its standard error.  At a bound
-        (``bound`` not None) the coefficient is where the search stopped, not a measurement.
+        The dimensionless coefficient (:math:`\mu_0` or :math:`\delta`) and its standard error.  At
+        a bound (``bound`` not None) the coefficient is where the search stopped, not a measurement.
     log_stderr : float
-        Standard error of ln coefficient (the relative standard error).
+        Standard error of the coefficient's logarithm (the relative standard error).
     state0 : numpy.ndarray
         Dimensionless state (x, y, vx, vy, wx, wy) at the first frame t0 (relative to
-        ``axis``, velocities in units of R ``omega``).
+        ``axis``, velocities in units of :math:`R \Omega`).
     t0 : float
         Time of the first frame, s.
     rss : float
@@ -55,11 +56,11 @@ class ModelFit(NamedTuple):
     rms_residual : float
         :math:`\sqrt{\mathrm{RSS}/N}`, m: the rms residual per coordinate (N = 2n coordinates).
     aic : float
-        N ln(RSS / N) + 2 K, K = p + 1.
+        :math:`N \ln(\mathrm{RSS} / N) + 2K`, :math:`K = p + 1`.
     aicc : float
-        AIC + 2 K (K + 1) / (N - K - 1); inf if N <= K + 1.
+        :math:`\mathrm{AIC} + 2K (K + 1) / (N - K - 1)`; inf if :math:`N \le K + 1`.
     n_parameters, n_observations : int
-        p and N.
+        :math:`p` and :math:`N`.
     converged : bool
         Whether `scipy.optimize.least_squares` met a convergence criterion.
     at_bound : bool
@@ -72,10 +73,10 @@ class ModelFit(NamedTuple):
         At a bound, the one-sided 95 % limit (lower limit at the upper bound, upper limit
         at the lower one, ``_limit``); nan otherwise.
     omega, omega_stderr : float
-        Omega (rad/s) of the fit: the given one, or the fitted one with its standard error
+        :math:`\Omega` (rad/s) of the fit: the given one, or the fitted one with its standard error
         (nan when given).
     omega_at_bound : bool
-        With ``fit_omega``: Omega ran into its search range (factor `OMEGA_FACTOR`).
+        With ``fit_omega``: :math:`\Omega` ran into its search range (factor `OMEGA_FACTOR`).
     axis, axis_stderr : tuple of float
         Position of the axis (m): the given one, or the fitted one (rolling model with
         ``fit_axis``) with its standard errors (nan when given).
@@ -178,7 +179,7 @@ def aic(rss: float, n_observations: int, n_params: int) -> float:
     Parameters
     ----------
     rss : float
-        Residual sum of squares, >= 0.
+        Residual sum of squares, :math:`\ge 0`.
     n_observations : int
         Number N of fitted coordinates.
     n_params : int
@@ -220,7 +221,7 @@ def aicc(rss: float, n_observations: int, n_params: int) -> float:
     -------
     float
         `aic` plus the correction (Hurvich and Tsai 1989), exact for a linear Gaussian
-        model; inf when N <= K + 1, where it is undefined.
+        model; inf when :math:`N \le K + 1`, where it is undefined.
 
     See Also
     --------
@@ -260,7 +261,7 @@ def whiteness(residuals: ArrayLike) -> tuple[float, float]:
     Notes
     -----
     The residual of the right model is the tracking noise, independent from frame to
-    frame: rho scatters about 0 by sd.  A model that misses the motion (a wrong Omega, k,
+    frame: rho scatters about 0 by sd.  A model that misses the motion (a wrong :math:`\Omega`, k,
     axis or sense of rotation, or the wrong mechanism) leaves a smooth error, correlated
     from one frame to the next: rho approaches the share of that error in the residual
     variance, many times sd.
@@ -357,7 +358,7 @@ class FilmFit(NamedTuple):
         The model of smaller AICc; None when the film is too short to compare them
         (fewer than `MIN_DOF` coordinates left, see `min_frames`) or a fit failed.
     aicc_difference : float
-        AICc of the other model minus AICc of the selected one (>= 0); nan if none.
+        AICc of the other model minus AICc of the selected one (:math:`\ge 0`); nan if none.
     akaike_weights : dict
         {model: :math:`e^{-\Delta_i / 2} / \sum_j e^{-\Delta_j / 2}`},
         :math:`\Delta_i = \mathrm{AICc}_i - \min \mathrm{AICc}`

@@ -25,13 +25,13 @@ def simulate_film(
     Parameters
     ----------
     model : {"slipping", "rolling_resistance"}
-        The slipping ball of the paper (`turntable.solve`, coefficient mu0) or the ball
-        rolling without slipping with rolling resistance (`turntable.rolling.solve`,
-        coefficient delta).
+        The slipping ball of the paper (`turntable.solve`, coefficient :math:`\mu_0`) or the
+        ball rolling without slipping with rolling resistance (`turntable.rolling.solve`,
+        coefficient :math:`\delta`).
     coefficient : float
         :math:`\mu_0 / (m \Omega)` or :math:`\delta / (m R^2 \Omega)`, dimensionless, > 0.
     state0 : array_like
-        Dimensionless state (x, y, vx, vy, wx, wy) at t = 0 (see
+        Dimensionless state (x, y, vx, vy, wx, wy) at :math:`t = 0` (see
         `~turntable.film.state_from_si`); for the rolling model it must satisfy the no-slip
         constraint.
     setup : Setup
@@ -44,7 +44,8 @@ def simulate_film(
     Returns
     -------
     Film
-        Frames at t = i / fps; x, y = R (x, y)(Omega t) + axis + noise, each coordinate
+        Frames at :math:`t = i / \mathrm{fps}`;
+        :math:`(x, y) = R\, (x, y)(\Omega t) + \mathrm{axis} + \mathrm{noise}`, each coordinate
         with independent :math:`N(0, \text{noise}^2)` errors; marked ``synthetic``.
 
     See Also

@@ -28,7 +28,7 @@ from turntable.spectrum import spectrum
 GRID_PER_DECADE = 8
 #: Frames used by the search for start values: every stride-th frame, so that about
 #: START_FRAMES remain, unless that would leave frames more than START_STEP apart in
-#: Omega t (about 20 per turn of the turntable).
+#: :math:`\Omega t` (about 20 per turn of the turntable).
 START_FRAMES = 400
 START_STEP = 0.3
 
@@ -117,13 +117,13 @@ def start_values(
     k: float,
     fit_axis: bool = False,
 ) -> tuple[float, NDArray[np.float64]]:
-    """Return a start (coefficient, state parameters) found from the data alone.
+    r"""Return a start (coefficient, state parameters) found from the data alone.
 
     Parameters
     ----------
     model : {"slipping", "rolling_resistance"}
     tau : numpy.ndarray
-        Dimensionless times Omega (t - t0), from 0, increasing.
+        Dimensionless times :math:`\Omega (t - t_0)`, from 0, increasing.
     xy : numpy.ndarray
         Dimensionless positions (position - axis) / R, shape (n, 2).
     k : float
@@ -142,7 +142,7 @@ def start_values(
     -----
     Variable projection (module docstring): the residual of the best amplitudes on a
     grid of `GRID_PER_DECADE` points per decade over `BOUNDS`, then a bounded search
-    (Brent) in ln c between the neighbours of the best grid point; on a subset of the
+    (Brent) in :math:`\ln c` between the neighbours of the best grid point; on a subset of the
     frames (`START_FRAMES`, ``START_STEP``), which is plenty for a start.
 
     Examples

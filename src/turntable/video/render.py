@@ -1,7 +1,7 @@
-"""SYNTHETIC videos of a ball on a turntable, rendered from the exact solutions.
+r"""SYNTHETIC videos of a ball on a turntable, rendered from the exact solutions.
 
 `render_video` draws, frame by frame and in colour, what a camera above the turntable would
-film: a textured platter of radius P turning counterclockwise at Omega, with grooves, a
+film: a textured platter of radius P turning counterclockwise at :math:`\Omega`, with grooves, a
 label at its centre and a mark (a disc, a square or a strip of tape) near its rim, on a
 table; a shaded ball (matte or shiny) whose centre is R above the platter, moving as one of
 the friction models says (`turntable.fit.positions`), and its shadow; what a phone adds:
@@ -42,12 +42,12 @@ RGB = tuple[float, float, float]
 
 
 class Scene(NamedTuple):
-    """What is filmed, and how.
+    r"""What is filmed, and how.
 
     Attributes
     ----------
     platter_radius : float
-        P, m.
+        :math:`P`, m.
     tilt_deg, roll_deg : float
         Tilt of the optical axis from the vertical, and roll about it, degrees.
     size : tuple of int
@@ -74,8 +74,9 @@ class Scene(NamedTuple):
         The platter turns clockwise as the camera sees it: the scene is the mirror image
         of the counterclockwise one.
     jitter : float
-        Variable frame rate: each frame's time but the first is moved by up to +- jitter / 2
-        frame intervals (uniformly at random; at most 0.9), as phones record.
+        Variable frame rate: each frame's time but the first is moved by up to
+        :math:`\pm\, \mathrm{jitter} / 2` frame intervals (uniformly at random; at most 0.9), as
+        phones record.
     ball_colour : tuple of float
         RGB (0-255) of the ball.
     ball_finish : {"matte", "specular"}
@@ -97,7 +98,7 @@ class Scene(NamedTuple):
         Shape of the mark; a strip is a rectangle of tape, ``mark_aspect`` times as long
         as it is wide.
     mark_aspect : float
-        Length over width of a strip (>= 1).
+        Length over width of a strip, at least 1.
     mark_along : {"tangential", "radial"}
         Direction of a strip's long side.
     mark_colour : tuple of float
@@ -114,15 +115,17 @@ class Scene(NamedTuple):
         Radial distortion of the lens, :math:`x_d = x (1 + k_1 r^2)` in image coordinates
         normalised by the focal length; < 0 is barrel distortion (in [-0.3, 0.3]).
     readout : float
-        Rolling shutter: row v is exposed from t + readout v / (height fps), readout a
-        fraction of the frame interval (0: a global shutter).
+        Rolling shutter: row :math:`v` is exposed from
+        :math:`t + \mathrm{readout}\, v / (\mathrm{height}\, \mathrm{fps})`, readout a fraction
+        of the frame interval (0: a global shutter).
     flicker : float
-        Mains flicker: the light is multiplied by 1 + flicker sin(2 pi flicker_hz t + phase),
-        averaged over each row's exposure.
+        Mains flicker: the light is multiplied by
+        :math:`1 + \mathrm{flicker}\, \sin(2 \pi f t + \varphi)` (:math:`f` ``flicker_hz``,
+        :math:`\varphi` ``flicker_phase_deg``), averaged over each row's exposure.
     flicker_hz : float
         Frequency of the flicker (100 Hz for 50 Hz mains, 120 for 60 Hz).
     flicker_phase_deg : float
-        Phase of the flicker at t = 0, degrees.
+        Phase of the flicker at :math:`t = 0`, degrees.
 
     Examples
     --------

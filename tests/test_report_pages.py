@@ -98,6 +98,12 @@ def test_claims_page_has_one_row_per_claim_with_its_verdict() -> None:
             id="ids-untouched",
         ),
         pytest.param("a < b & c", "a &lt; b &amp; c", id="escaped"),
+        pytest.param(
+            "at the frequency beta. Then x0, vx.",
+            "at the frequency β. Then x<sub>0</sub>, v<sub>x</sub>.",
+            id="before-a-full-stop",
+        ),
+        pytest.param("turntable.beta, beta.x", "turntable.beta, beta.x", id="dotted-names"),
     ],
 )
 def test_claims_page_typesets_the_plain_text_mathematics(text: str, html: str) -> None:

@@ -122,6 +122,11 @@ def test_the_mark_off_its_circle_is_refused(tracked) -> None:
         assert failed == ([] if passed else ["mark_on_circle"])
 
 
+def test_every_check_has_its_help() -> None:
+    """A check without a help text would stop with a KeyError where it refuses a video."""
+    assert list(check.CHECKS) == list(check.HELP)
+
+
 def test_the_checks_pass_on_a_right_track(tracked) -> None:
     _, run = tracked
     assert check.first_failure(run()) is None

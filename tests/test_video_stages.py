@@ -122,6 +122,11 @@ def test_the_mark_off_its_circle_is_refused(tracked) -> None:
         assert failed == ([] if passed else ["mark_on_circle"])
 
 
+def test_every_check_has_its_help() -> None:
+    """A check without a help text would stop with a KeyError where it refuses a video."""
+    assert list(check.CHECKS) == list(check.HELP)
+
+
 def test_the_checks_pass_on_a_right_track(tracked) -> None:
     _, run = tracked
     assert check.first_failure(run()) is None
@@ -186,8 +191,8 @@ def test_what_the_rim_cuts_is_no_candidate() -> None:
     """A dark band along the near rim (the platter's side or shadow, inside a rim fitted a
     pixel too wide) is cut by the edge of the searched region: not a candidate; a mark near
     the rim, wholly inside, is."""
-    from turntable.video.find import _parts
     from turntable.video.platter import Ellipse, Platter
+    from turntable.video.regions import _parts
 
     rgb = np.full((200, 300, 3), 40, np.uint8)
     rim = Ellipse((150.0, 100.0), 120.0, 80.0, 0.0)
@@ -284,7 +289,8 @@ def test_a_crescent_of_the_ball_s_size_is_no_ball() -> None:
     the platter, a crescent of about the ball's area.  Its centre was followed, 0.75 R off the
     ball's, with exit status 0; now no candidate is the ball (and the search says so)."""
     from turntable.video import camera
-    from turntable.video.find import MIN_SOLIDITY, Candidate, _choose_ball, _shape
+    from turntable.video.find import MIN_SOLIDITY, Candidate, _choose_ball
+    from turntable.video.regions import _shape
 
     pose = camera.Pose(1000.0, 0.0, 0.0, (0.0, 0.0), 0.4, (120, 120))
     v, u = np.mgrid[0:120, 0:120]

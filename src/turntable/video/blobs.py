@@ -19,6 +19,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from turntable.video.decode import Picture, lab
+from turntable.video.robust import circle_centre, inliers
 
 try:
     import cv2
@@ -37,6 +38,10 @@ OFF_LINE = 0.6
 EDGE_LIGHTNESS = 15.0
 #: Outline points farther than this (px) from the fitted circle are left out.
 EDGE_OFF = 1.0
+#: ... and those farther than this many spreads (`turntable.video.robust.inliers`) from the
+#: others, the spread at least ``EDGE_FLOOR`` px (an outline to a tenth of a pixel is not cut
+#: finer), over at most ``EDGE_ROUNDS`` fits.
+EDGE_SPREADS, EDGE_FLOOR, EDGE_ROUNDS = 3.0, 0.1, 6
 #: An outline is a fall to a share below this (2 px beyond it): not the edge of a highlight.
 BELOW = 0.75
 #: A ray whose share rises again by this share of a clear fall's depth within 2 px beyond its
@@ -45,6 +50,24 @@ RISE = 0.15
 #: The outline is where the share crosses half-way down its fall, unless that is farther than
 #: this (px) from the fall's steepest point (two falls run together): then the steepest point.
 HALF_WAY = 0.5
+#: Rays are sampled every ``RAY_STEP`` px, from ``RAY_FROM`` to ``RAY_TO`` times the radius
+#: (and 3 px more): the outline of a ball whose predicted size is off by a third lies on them.
+RAY_STEP, RAY_FROM, RAY_TO = 0.25, 0.3, 1.7
+#: What lies within this (px) beyond a fall tells a fall to the platter (`BELOW`) from one
+#: off a highlight, and a shaded limb (`RISE`).
+BEYOND_PX = 2
+#: A fall counts where it is at least ``STEEP`` of the ray's steepest, and that at least
+#: ``MIN_FALL`` (share per px): the grain of the platter falls less.
+STEEP, MIN_FALL = 0.5, 0.1
+#: The clearest falls' depth is this percentile of the falls'; a fall shallower than
+#: ``1 / SHALLOW`` of it weighs in proportion.
+CLEAR_PERCENTILE, SHALLOW = 90, 2.0
+#: A blob is taken as round, and centred by its outline, where its area is within these
+#: factors of the circle's.
+ROUND_AREA = (0.4, 2.5)
+#: A ball in a blob of a like colour (`merged_ball`): found by this many outline points at
+#: least (half of the rays), within this share of the radius of where it is predicted.
+MERGED_POINTS, MERGED_REACH = 24, 0.25
 
 _KERNEL = np.ones((3, 3), np.uint8)
 
@@ -138,7 +161,7 @@ def blobs(
             or (y + h + v0 >= height)
         )
         centre = np.array([(wt * uu).sum(), (wt * vv).sum()]) / total
-        if outline and 0.4 < total / (math.pi * outline**2) < 2.5:
+        if outline and ROUND_AREA[0] < total / (math.pi * outline**2) < ROUND_AREA[1]:
             edge = colour.edge_share(lab_img)
             centre = outline_centre(edge, centre, outline, centre)
         cut = x == 0 or y == 0 or x + w >= mask.shape[1] or y + h >= mask.shape[0]
@@ -160,8 +183,9 @@ def merged_ball(
         return None
     if colour.share(lab_img)[int(start[1]), int(start[0])] < THRESHOLD:
         return None
-    centre = outline_centre(colour.edge_share(lab_img), start, radius, None, min_points=24)
-    if centre is None or np.hypot(*(centre - start)) > 0.25 * radius:
+    edge = colour.edge_share(lab_img)
+    centre = outline_centre(edge, start, radius, None, min_points=MERGED_POINTS)
+    if centre is None or np.hypot(*(centre - start)) > MERGED_REACH * radius:
         return None
     return Blob(float(centre[0]) + box[1].start, float(centre[1]) + box[0].start,
                 math.pi * radius**2, False)  # fmt: skip
@@ -176,96 +200,115 @@ def outline_centre(
     min_points: int = 12,
 ) -> NDArray | None:
     """The centre (window px) of the circle of radius ``radius`` (px) through a round blob's
-    outline.
+    outline, in four steps.
 
-    Along each of ``rays`` rays from ``start``, the outline lies on the first fall of the
-    share, going out, that is steep (its fall per pixel at least half the steepest along the
-    ray, from above ``THRESHOLD``, to below `BELOW`: not off a highlight).  The fall is taken
-    whole, while it stays above half its own steepest (a ripple on its way down does not end
-    it), and the outline is where the share crosses half-way between its values where the fall
-    begins and ends, to a fraction of a pixel; or, where that lies more than `HALF_WAY` from
-    the fall's steepest point (the ball's fall runs into that of a shadow beside it), that
-    point.  The circle of the given radius nearest
-    those points is fitted by weighted least squares, points more than `EDGE_OFF` px or 3
-    spreads off it left out (and taken back if the circle moves to them).  A ray whose share
-    rises again, within 2 px beyond its fall, by `RISE` of the depth of the clearest falls
-    (their 90th percentile) has no weight: on a ball's shaded limb, the share falls to the
-    darkest part of the limb (a colour off the line between the platter's and the ball's, of
-    share 0), inside the outline, and rises beyond it.  A fall shallower than half the clearest
-    weighs in proportion (a dim limb against its shadow).  A shadow beside the ball begins
-    with a second fall, which is never reached.  Falls back to ``fallback`` with fewer than
-    ``min_points`` points, or fewer than half as many kept with weight.
+    1. The share is sampled along each of ``rays`` rays from ``start`` (`_profiles`).
+    2. On each ray, the outline lies on the first steep fall of the share, going out, to
+       below `BELOW` (not off a highlight), taken whole (`_first_fall`).
+    3. The outline point is where the share crosses half-way down that fall, or its steepest
+       point where the two lie more than `HALF_WAY` apart (the ball's fall runs into that of
+       a shadow beside it); a ray weighs by its fall's depth and not at all where the share
+       rises again beyond it, on a ball's shaded limb (`_outline_points`).
+    4. The circle of the given radius nearest the points is fitted by weighted least
+       squares, outliers (`EDGE_OFF`, `EDGE_SPREADS`) left out and taken back if the circle
+       moves to them (`_fit_outline`).
+
+    A shadow beside the ball begins with a second fall, which is never reached.  Falls back
+    to ``fallback`` with fewer than ``min_points`` points, or fewer than half as many kept
+    with weight.
     """
-    step = 0.25
-    near = int(2 / step)  # samples in 2 px
-    r = np.arange(0.3 * radius, 1.7 * radius + 3.0, step)
+    # 1. the share along each ray, and its fall per px
+    r, a, prof = _profiles(share, start, radius, rays)
+    fall = (prof[:, :-2] - prof[:, 2:]) / (2 * RAY_STEP)  # centred, at samples 1 .. n-2
+    peaked = np.maximum.accumulate(prof[:, :-2], axis=1) > THRESHOLD
+    # 2. the first steep fall to near the platter on each ray
+    found = []
+    for k in range(rays):
+        got = _first_fall(fall[k], prof[k], peaked[k])
+        if got is not None:
+            found.append((k, *got))
+    if len(found) < min_points:
+        return fallback
+    # 3. where each crosses half-way, and its weight
+    pts, weight = _outline_points(np.array(found).T, r, a, prof, fall, start)
+    # 4. the circle through them
+    return _fit_outline(pts, weight, start, radius, fallback, min_points)
+
+
+def _profiles(share, start, radius: float, rays: int):
+    """The radii sampled (px), the rays' angles and the share along each ray (rays, radii)."""
+    r = np.arange(RAY_FROM * radius, RAY_TO * radius + 3.0, RAY_STEP)
     a = np.linspace(0.0, 2 * math.pi, rays, endpoint=False)
     pu = (start[0] + np.cos(a)[:, None] * r).astype(np.float32)
     pv = (start[1] + np.sin(a)[:, None] * r).astype(np.float32)
     prof = cv2.remap(share, pu, pv, cv2.INTER_LINEAR, borderMode=cv2.BORDER_REPLICATE)
-    fall = (prof[:, :-2] - prof[:, 2:]) / (2 * step)  # centred, at samples 1 .. n-2
-    top = fall.max(axis=1)
-    peaks = np.maximum.accumulate(prof[:, :-2], axis=1) > THRESHOLD
-    found = []  # (ray, where its fall begins, its steepest point, where it ends), in fall's
-    for k in range(rays):
-        f, p = fall[k], prof[k]
-        strong = (f >= 0.5 * top[k]) & (p[1:-1] < p[0]) & (top[k] > 0.1) & peaks[k]
-        end = None
-        for i in np.flatnonzero(strong):
-            if end is not None and i <= end:
-                continue
-            end, peak = i, f[i]
-            while end + 1 < f.size and f[end + 1] > 0.5 * peak:
-                end += 1  # the whole of this fall, while above half its steepest
-                peak = max(peak, f[end])
-            j = i + int(np.argmax(f[i : end + 1]))  # its steepest point
-            if p[min(j + 1 + near, p.size - 1)] < BELOW:
-                break  # a fall to near the platter or a shadow, not off a highlight
-        else:
+    return r, a, prof
+
+
+def _first_fall(f, p, peaked) -> tuple[int, int, int] | None:
+    """The first fall of a ray at least `STEEP` of its steepest, from above `THRESHOLD`,
+    that ends below `BELOW`: where it begins, its steepest point and where it ends (indices
+    of ``f``, the fall per px); None if none.  A fall is taken whole, while it stays above
+    half its own steepest (a ripple on its way down does not end it)."""
+    top = f.max()
+    beyond = int(BEYOND_PX / RAY_STEP)
+    strong = (f >= STEEP * top) & (p[1:-1] < p[0]) & (top > MIN_FALL) & peaked
+    end = None
+    for i in np.flatnonzero(strong):
+        if end is not None and i <= end:
             continue
-        while i > 0 and f[i - 1] > 0.5 * peak:
-            i -= 1  # where the fall begins
-        found.append((k, i, j, end))
-    if len(found) < min_points:
-        return fallback
-    k, begin, j, end = np.array(found).T
+        end, peak = i, f[i]
+        while end + 1 < f.size and f[end + 1] > STEEP * peak:
+            end += 1
+            peak = max(peak, f[end])
+        j = i + int(np.argmax(f[i : end + 1]))
+        if p[min(j + 1 + beyond, p.size - 1)] < BELOW:
+            break  # a fall to near the platter or a shadow, not off a highlight
+    else:
+        return None
+    while i > 0 and f[i - 1] > STEEP * peak:
+        i -= 1
+    return i, j, end
+
+
+def _outline_points(found, r, a, prof, fall, start):
+    """The outline's points (window px) of the falls ``found`` (ray, begin, steepest, end)
+    and their weights: by the fall's depth against the clearest falls', 0 where the share
+    rises again by `RISE` of it within `BEYOND_PX` beyond the fall."""
+    k, begin, j, end = found
+    beyond = int(BEYOND_PX / RAY_STEP)
     f = fall[k[:, None], np.clip(j[:, None] + np.arange(-1, 2), 0, fall.shape[1] - 1)]
     den = f[:, 0] - 2 * f[:, 1] + f[:, 2]
     ok = (den < 0) & (j > 0) & (j < fall.shape[1] - 1)
     x = j + np.where(ok, 0.5 * (f[:, 0] - f[:, 2]) / np.where(ok, den, -1.0), 0.0)
-    steepest = r[0] + (x + 1) * step  # the peak of the parabola through the fall about it
+    steepest = r[0] + (x + 1) * RAY_STEP  # the peak of the parabola through the fall about it
     p, n = prof[k], np.arange(k.size)
     inside, outside = p[n, begin], p[n, end + 2]
     level = 0.5 * (inside + outside)
     below = np.argmax((np.arange(p.shape[1]) > begin[:, None]) & (p < level[:, None]), axis=1)
     hi, lo = p[n, below - 1], p[n, below]
-    half = r[0] + (below - 1 + (hi - level) / np.maximum(hi - lo, 1e-6)) * step
+    half = r[0] + (below - 1 + (hi - level) / np.maximum(hi - lo, 1e-6)) * RAY_STEP
     rr = np.where(np.abs(half - steepest) < HALF_WAY, half, steepest)
     pts = np.column_stack([start[0] + np.cos(a[k]) * rr, start[1] + np.sin(a[k]) * rr])
     depth = inside - outside
-    after = p[n[:, None], np.minimum(end[:, None] + 2 + np.arange(near + 1),
-                                                     p.shape[1] - 1)]  # fmt: skip
+    after = p[n[:, None], np.minimum(end[:, None] + 2 + np.arange(beyond + 1), p.shape[1] - 1)]
     rise = (after - np.minimum.accumulate(after, axis=1)).max(axis=1)
-    clear = float(np.percentile(depth, 90))
-    weight = np.clip(2 * depth / clear, 0.0, 1.0) * (rise < RISE * clear)
-    from scipy.stats import median_abs_deviation
+    clear = float(np.percentile(depth, CLEAR_PERCENTILE))
+    weight = np.clip(SHALLOW * depth / clear, 0.0, 1.0) * (rise < RISE * clear)
+    return pts[weight > 0], weight[weight > 0]
 
-    pts, weight = pts[weight > 0], weight[weight > 0]
+
+def _fit_outline(pts, weight, start, radius: float, fallback, min_points: int):
+    """The centre of the circle of radius ``radius`` nearest the weighted points, refitted
+    without the outliers until they stay the same (at most `EDGE_ROUNDS` fits)."""
     keep = np.ones(len(pts), bool)
     centre = np.asarray(start, float)
-    for _ in range(6):
+    for _ in range(EDGE_ROUNDS):
         if 2 * keep.sum() < min_points:
             return fallback
-        sw = np.sqrt(weight[keep])[:, None]
-        for _ in range(3):  # Gauss-Newton for the centre of a circle of known radius
-            d = pts[keep] - centre
-            dist = np.maximum(np.hypot(d[:, 0], d[:, 1]), 1e-9)
-            jac = -d / dist[:, None]
-            centre = centre - np.linalg.lstsq(jac * sw, (dist - radius) * sw[:, 0], rcond=None)[0]
+        centre = circle_centre(pts[keep], radius, start=centre, weights=weight[keep])
         dev = np.hypot(*(pts - centre).T) - radius  # of every point: a dropped one may return
-        mid = float(np.median(dev[keep]))
-        spread = float(median_abs_deviation(dev[keep], scale="normal")) + 0.1
-        again = np.abs(dev - mid) < min(3 * spread, EDGE_OFF)
+        again = inliers(dev, EDGE_SPREADS, EDGE_FLOOR, kept=keep, centred=True, most=EDGE_OFF)
         if (again == keep).all():
             break
         keep = again

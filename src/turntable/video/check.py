@@ -27,10 +27,11 @@ and the option that would help.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
-from typing import Any
+from collections.abc import Callable, Iterable
+from typing import Any, NamedTuple
 
 import numpy as np
+from numpy.typing import NDArray
 
 from turntable.video import camera
 from turntable.video.calibrate import Calibration
@@ -38,14 +39,31 @@ from turntable.video.camera import Pose
 from turntable.video.find import RATE_RANGE, Found
 from turntable.video.follow import Paths
 from turntable.video.platter import Ellipse, fit_ellipse
+from turntable.video.robust import circle_centre
 
+#: The mark's rate within this share of ``--rpm`` (a platter's rate is within 1 % of its
+#: setting).
+RPM_AGREE = 0.01
 #: The mark's images within this many px (rms) of the fitted circle, or half its size.
 MARK_RMS_PX = 2.0
-#: The ball's scatter about its smooth path: the limit (rms, in R) and the half-window (s).
-SMOOTH_R, SMOOTH_S = 0.06, 0.05
+#: The mark's circle centred within this share of P of the rim's centre.
+AXIS_OFF = 0.03
+#: The images' axis ratios of the mark's circle and the rim within this; compared once the
+#: mark has covered ``TILT_TURN`` rad in at least ``TILT_FRAMES`` frames (less of an ellipse
+#: does not fix its axis ratio).
+TILT_AGREE, TILT_TURN, TILT_FRAMES = 0.03, math.pi, 10
 #: The share of the frames the ball must be found on (on good tracks, at most a third are
 #: gaps: where it passes the mark or runs into a label of its colour).
 MIN_FOUND = 0.5
+#: The ball's path in the platter's frame spreads over at least this (R): a blob that turns
+#: with the platter is a mark or a label.
+MIN_SPREAD_R = 0.5
+#: A jump: a position more than ``JUMP_R`` R off the line between its neighbours (and what an
+#: acceleration of 2 Omega^2 P does); at most ``JUMP_SHARE`` of the positions jump.
+JUMP_R, JUMP_SHARE = 0.25, 0.02
+#: The ball's scatter about its smooth path: the limit (rms, in R) and the half-window (s, and
+#: at least ``SMOOTH_FRAMES`` frames).
+SMOOTH_R, SMOOTH_S, SMOOTH_FRAMES = 0.06, 0.05, 2.5
 #: The ball's image radius over the one R and the camera predict: 0.89-1.17 on good tracks of
 #: MuJoCo's scenes; 0.77 where a small white ball's shaded limb, darker than the platter, was
 #: left out and its centre taken from its lit side.
@@ -73,11 +91,134 @@ HELP = {
 }
 
 
-def _circle_centre(xy: np.ndarray) -> np.ndarray:
-    """Centre of the least-squares circle through points (Kasa's algebraic fit)."""
-    a = np.c_[2 * xy, np.ones(len(xy))]
-    sol = np.linalg.lstsq(a, (xy**2).sum(axis=1), rcond=None)[0]
-    return sol[:2]
+class _Seen(NamedTuple):
+    """What the checks compare: the track's stages, and the ball's positions on the frames
+    where it was found (m, on the plane of its centre) at their times (s, the rolling
+    shutter's delay added)."""
+
+    cal: Calibration
+    paths: Paths
+    found: Found
+    rim: Ellipse
+    rim_pose: Pose
+    ball_radius: float
+    platter_radius: float
+    rpm: float | None
+    t: NDArray[np.float64]
+    seen: NDArray[np.bool_]
+    xy: NDArray[np.float64]
+    ts: NDArray[np.float64]
+
+    @property
+    def rate(self) -> float:
+        return abs(self.cal.omega)
+
+
+#: A check's result: its value, its limit, whether it passed, and what it says if not.
+_Result = tuple[float, Any, bool, str]
+
+
+def _rate(s: _Seen) -> _Result:
+    rpm_seen = s.rate * 30 / math.pi
+    if s.rpm is None:
+        ok = RATE_RANGE[0] <= s.rate <= RATE_RANGE[1]
+        says = f"the mark turns at {rpm_seen:.3g} rpm, not a rate a platter has"
+        return s.rate, list(RATE_RANGE), ok, says
+    off = s.rate / (s.rpm * math.pi / 30) - 1
+    says = f"the mark turns at {rpm_seen:.4g} rpm, not at the given --rpm {s.rpm:g}"
+    return off, RPM_AGREE, abs(off) <= RPM_AGREE, says
+
+
+def _mark_on_circle(s: _Seen) -> _Result:
+    rms = s.cal.mark_rms_px
+    limit = max(MARK_RMS_PX, 0.5 * math.sqrt(s.found.mark.area / math.pi))
+    says = f"the mark's images are {rms:.2g} px (rms) off a circle turning steadily"
+    return rms, limit, rms <= limit, says
+
+
+def _axis(s: _Seen) -> _Result:
+    q = camera.back_project(s.rim_pose, s.paths.mark[_mark_seen(s)])
+    off = float(np.hypot(*circle_centre(q))) / s.platter_radius
+    says = f"the mark's circle is centred {off:.2g} P from the rim's centre"
+    return off, AXIS_OFF, off <= AXIS_OFF, says
+
+
+def _tilt(s: _Seen) -> _Result | None:
+    ok = _mark_seen(s)
+    span = s.rate * float(np.ptp(s.t[ok])) if ok.sum() > 1 else 0.0
+    if span < TILT_TURN or ok.sum() < TILT_FRAMES:
+        return None
+    e = fit_ellipse(s.paths.mark[ok])
+    diff = abs(e.b / e.a - s.rim.b / s.rim.a)
+    tilts = [math.degrees(math.acos(min(x, 1.0))) for x in (s.rim.b / s.rim.a, e.b / e.a)]
+    says = f"the rim is seen tilted by {tilts[0]:.1f} deg, the mark's circle by {tilts[1]:.1f} deg"
+    return diff, TILT_AGREE, diff <= TILT_AGREE, says
+
+
+def _ball_found(s: _Seen) -> _Result:
+    share = float(s.seen.mean())
+    says = f"the ball was found on {100 * share:.0f} % of the frames only"
+    return share, MIN_FOUND, share >= MIN_FOUND, says
+
+
+def _ball_moves(s: _Seen) -> _Result:
+    z = (s.xy[:, 0] + 1j * s.xy[:, 1]) * np.exp(-1j * s.cal.omega * s.ts)
+    spread = float(np.sqrt(np.mean(np.abs(z - z.mean()) ** 2))) / s.ball_radius
+    says = (
+        f"the ball's path in the platter's frame spreads over {spread:.2g} R only: it turns "
+        "with the platter"
+    )
+    return spread, MIN_SPREAD_R, spread >= MIN_SPREAD_R, says
+
+
+def _ball_path(s: _Seen) -> _Result:
+    jumps, ts, xy = 0.0, s.ts, s.xy
+    if len(ts) > 2:
+        before, after = ts[1:-1] - ts[:-2], ts[2:] - ts[1:-1]
+        w = (before / (before + after))[:, None]
+        off = np.hypot(*(xy[1:-1] - ((1 - w) * xy[:-2] + w * xy[2:])).T)
+        allowed = JUMP_R * s.ball_radius + 2 * s.rate**2 * s.platter_radius * before * after
+        jumps = float(np.mean(off > allowed))
+    says = f"the ball jumps on {100 * jumps:.2g} % of the frames"
+    return jumps, JUMP_SHARE, jumps <= JUMP_SHARE, says
+
+
+def _ball_smooth(s: _Seen) -> _Result:
+    step = float(np.median(np.diff(s.ts))) if len(s.ts) > 1 else 0.0
+    half = max(SMOOTH_S, SMOOTH_FRAMES * step)
+    smooth = _scatter(s.ts, s.xy, half) / s.ball_radius
+    says = f"the ball's positions scatter by {smooth:.2g} R about a smooth path"
+    return smooth, SMOOTH_R, smooth <= SMOOTH_R, says
+
+
+def _ball_size(s: _Seen) -> _Result:
+    ball = s.paths.ball[s.seen]
+    predicted = float(np.median(camera.image_radius(s.cal.pose, ball, s.ball_radius)))
+    measured = math.sqrt(float(np.nanmedian(s.paths.ball_area)) / math.pi)
+    ratio = measured / predicted
+    says = (
+        f"the ball's image is {2 * measured:.3g} px across, a ball of the given radius there "
+        f"would be {2 * predicted:.3g} px"
+    )
+    return ratio, list(BALL_SIZE), BALL_SIZE[0] <= ratio <= BALL_SIZE[1], says
+
+
+#: The checks, in the order they are reported (the first that fails names the refusal).
+CHECKS: dict[str, Callable[[_Seen], _Result | None]] = {
+    "rate": _rate,
+    "mark_on_circle": _mark_on_circle,
+    "axis": _axis,
+    "tilt": _tilt,
+    "ball_found": _ball_found,
+    "ball_moves": _ball_moves,
+    "ball_path": _ball_path,
+    "ball_smooth": _ball_smooth,
+    "ball_size": _ball_size,
+}
+
+
+def _mark_seen(s: _Seen) -> NDArray[np.bool_]:
+    return np.isfinite(s.paths.mark[:, 0])
 
 
 def _scatter(t: np.ndarray, xy: np.ndarray, half: float) -> float:
@@ -106,119 +247,18 @@ def checks(
     platter_radius: float,
     rpm: float | None,
 ) -> dict[str, dict[str, Any]]:
-    """Every check: {name: {"value", "limit", "passed", "says"}}."""
-    out: dict[str, dict[str, Any]] = {}
+    """Every check of `CHECKS` that applies: {name: {"value", "limit", "passed", "says"}}."""
     t = paths.t - paths.t[0]
-
-    def put(name: str, value: float, limit: Any, passed: bool, says: str) -> None:
-        out[name] = {"value": value, "limit": limit, "passed": bool(passed), "says": says}
-
-    rate = abs(cal.omega)
-    rpm_seen = rate * 30 / math.pi
-    if rpm is None:
-        put(
-            "rate",
-            rate,
-            list(RATE_RANGE),
-            RATE_RANGE[0] <= rate <= RATE_RANGE[1],
-            f"the mark turns at {rpm_seen:.3g} rpm, not a rate a platter has",
-        )
-    else:
-        off = rate / (rpm * math.pi / 30) - 1
-        put(
-            "rate",
-            off,
-            0.01,
-            abs(off) <= 0.01,
-            f"the mark turns at {rpm_seen:.4g} rpm, not at the given --rpm {rpm:g}",
-        )
-    r_mark = math.sqrt(found.mark.area / math.pi)
-    limit = max(MARK_RMS_PX, 0.5 * r_mark)
-    put(
-        "mark_on_circle",
-        cal.mark_rms_px,
-        limit,
-        cal.mark_rms_px <= limit,
-        f"the mark's images are {cal.mark_rms_px:.2g} px (rms) off a circle turning steadily",
-    )
-    ok = np.isfinite(paths.mark[:, 0])
-    q = camera.back_project(rim_pose, paths.mark[ok])
-    off = float(np.hypot(*_circle_centre(q))) / platter_radius
-    put(
-        "axis",
-        off,
-        0.03,
-        off <= 0.03,
-        f"the mark's circle is centred {off:.2g} P from the rim's centre",
-    )
-    span = rate * float(np.ptp(t[ok])) if ok.sum() > 1 else 0.0
-    if span >= math.pi and ok.sum() >= 10:
-        e = fit_ellipse(paths.mark[ok])
-        diff = abs(e.b / e.a - rim.b / rim.a)
-        tilts = [math.degrees(math.acos(min(x, 1.0))) for x in (rim.b / rim.a, e.b / e.a)]
-        put(
-            "tilt",
-            diff,
-            0.03,
-            diff <= 0.03,
-            f"the rim is seen tilted by {tilts[0]:.1f} deg, the mark's circle by "
-            f"{tilts[1]:.1f} deg",
-        )
     seen = np.isfinite(paths.ball[:, 0])
-    share = float(seen.mean())
-    put(
-        "ball_found",
-        share,
-        MIN_FOUND,
-        share >= MIN_FOUND,
-        f"the ball was found on {100 * share:.0f} % of the frames only",
-    )
     xy = camera.sphere_centre(cal.pose, paths.ball[seen], ball_radius)
     ts = cal.times(t[seen], paths.ball[seen, 1])
-    z = (xy[:, 0] + 1j * xy[:, 1]) * np.exp(-1j * cal.omega * ts)
-    spread = float(np.sqrt(np.mean(np.abs(z - z.mean()) ** 2))) / ball_radius
-    put(
-        "ball_moves",
-        spread,
-        0.5,
-        spread >= 0.5,
-        f"the ball's path in the platter's frame spreads over {spread:.2g} R only: it turns "
-        "with the platter",
-    )
-    jumps = 0.0
-    if len(ts) > 2:
-        before, after = ts[1:-1] - ts[:-2], ts[2:] - ts[1:-1]
-        w = (before / (before + after))[:, None]
-        off = np.hypot(*(xy[1:-1] - ((1 - w) * xy[:-2] + w * xy[2:])).T)
-        allowed = 0.25 * ball_radius + 2 * rate**2 * platter_radius * before * after
-        jumps = float(np.mean(off > allowed))
-    put(
-        "ball_path",
-        jumps,
-        0.02,
-        jumps <= 0.02,
-        f"the ball jumps on {100 * jumps:.2g} % of the frames",
-    )
-    step = float(np.median(np.diff(ts))) if len(ts) > 1 else 0.0
-    smooth = _scatter(ts, xy, max(SMOOTH_S, 2.5 * step)) / ball_radius
-    put(
-        "ball_smooth",
-        smooth,
-        SMOOTH_R,
-        smooth <= SMOOTH_R,
-        f"the ball's positions scatter by {smooth:.2g} R about a smooth path",
-    )
-    predicted = float(np.median(camera.image_radius(cal.pose, paths.ball[seen], ball_radius)))
-    measured = math.sqrt(float(np.nanmedian(paths.ball_area)) / math.pi)
-    ratio = measured / predicted
-    put(
-        "ball_size",
-        ratio,
-        list(BALL_SIZE),
-        BALL_SIZE[0] <= ratio <= BALL_SIZE[1],
-        f"the ball's image is {2 * measured:.3g} px across, a ball of the given radius there "
-        f"would be {2 * predicted:.3g} px",
-    )
+    s = _Seen(cal, paths, found, rim, rim_pose, ball_radius, platter_radius, rpm, t, seen, xy, ts)
+    out: dict[str, dict[str, Any]] = {}
+    for name, check in CHECKS.items():
+        result = check(s)
+        if result is not None:
+            value, limit, passed, says = result
+            out[name] = {"value": value, "limit": limit, "passed": bool(passed), "says": says}
     return out
 
 

@@ -25,19 +25,15 @@ import numpy as np
 from numpy.typing import NDArray
 
 from turntable.video import camera
-from turntable.video.blobs import THRESHOLD, Colour
+from turntable.video.blobs import Colour
 from turntable.video.camera import Pose
 from turntable.video.decode import Picture, VideoError, lab, window
 from turntable.video.platter import Platter
-
-try:
-    import cv2
-except ImportError:  # without the extra [video]
-    cv2 = None
+from turntable.video.regions import MIN_CONTRAST, Candidate, _candidate, _parts, _seeded
 
 #: A candidate differs from the platter by this many times the platter's median distance
 #: from its own colour, and by at least ``MIN_CONTRAST`` (CIELAB units).
-CONTRAST_NOISE, MIN_CONTRAST = 5.0, 10.0
+CONTRAST_NOISE = 5.0
 #: Candidates are followed over this long (s), at least `PROBE_FRAMES` frames.
 PROBE_SECONDS, PROBE_FRAMES = 0.3, 10
 #: A mark is at least this far from the axis, in units of P.
@@ -51,28 +47,33 @@ AREA_RANGE, MAX_ELONGATION = (0.35, 2.8), 2.0
 #: at least this share of its convex hull.  A ball's shaded limb and its shadow alone, its lit
 #: side of the platter's colour, make a crescent that covers 0.5-0.75.
 MIN_SOLIDITY = 0.8
+#: A seed's region is looked for within this many times the radius of a ball's image there.
+SEED_REACH = 4.0
 #: Rates of a mark seen in two probe frames agree within this share (a mark seeded where it
 #: does not stand out: `_turning_through`).
 SEED_RATE_AGREE = 0.15
+#: Candidates lie this far (px) inside the rim: not the platter's side, nor its shadow beyond
+#: a rim fitted a pixel too wide.
+RIM_MARGIN_PX = 3.0
+#: The platter's grain is measured between these shares of the rim (a label at its centre
+#: left out).
+GRAIN_RING = (0.35, 0.9)
+#: A candidate is followed to the blob of ``PROBE_AREA`` times its area nearest where its last
+#: step leads, within ``GATE_PX`` px and ``GATE_RADII`` of its radii of it, and as far as its
+#: step, or on the second frame the fastest platter (`RATE_RANGE`), would take it.
+PROBE_AREA, GATE_PX, GATE_RADII = (0.3, 3.3), 3.0, 1.5
+#: A candidate followed over this share of the probe's frames (and 3 at least) has a path.
+MIN_FOLLOWED = 0.6
+#: A path turns rigidly where its rms distance from a uniform turning is below ``RIGID_R`` R,
+#: or ``RIGID_PX`` px of the rim's scale, if more; and at least ``OFF_AXIS`` P from the axis
+#: (a label at the centre turns, but tells nothing of the rate).
+RIGID_R, RIGID_PX, OFF_AXIS = 0.15, 1.5, 0.05
+#: A mark's rate within this share of ``--rpm``.
+RPM_AGREE = 0.05
+#: A second candidate for the ball this close in contrast and area to the first makes the
+#: choice ambiguous.
+RIVAL_CONTRAST, RIVAL_AREA = 0.8, 0.6
 SEED_HINT = "give the first frame's pixel with --ball-at U,V and --mark-at U,V"
-
-
-class Candidate(NamedTuple):
-    """Something on the platter on the first frame, and what its motion says it is."""
-
-    u: float
-    v: float
-    area: float
-    colour: NDArray[np.float64]
-    contrast: float
-    elongation: float
-    #: the share of its convex hull that it covers, its holes filled
-    solidity: float = 1.0
-    #: distance from the axis in units of P if it turns rigidly with the platter, else nan
-    turns_at: float = math.nan
-    #: a part of a larger region, split from it by colour
-    split: bool = False
-    kind: str = "other"  # "ball", "mark", "other"
 
 
 class Found(NamedTuple):
@@ -91,10 +92,10 @@ class Found(NamedTuple):
 class _Path:
     """A candidate followed over the probe's frames."""
 
-    def __init__(self, c: Candidate) -> None:
+    def __init__(self, c: Candidate, t0: float) -> None:
         self.c = c
-        self.t: list[float] = []
-        self.uv: list[tuple[float, float]] = []
+        self.t: list[float] = [t0]
+        self.uv: list[tuple[float, float]] = [(c.u, c.v)]
 
     def predict(self, t: float) -> NDArray:
         """Where it is at time t, if it goes on as in its last step."""
@@ -105,83 +106,21 @@ class _Path:
         return np.array([u1, v1]) + (np.array([u1 - u0, v1 - v0])) * (t - t1) / (t1 - t0)
 
 
-def _components(lab_img, platter: Platter, allowed, threshold):
-    """Components of the pixels farther from the platter's colour than ``threshold``; those
-    cut by the edge of ``allowed`` (the platter's side or its shadow beyond a rim fitted a
-    pixel too wide) have area 0."""
-    dist = np.linalg.norm(lab_img - platter.colour.astype(np.float32), axis=-1)
-    mask = ((dist > threshold) & allowed).astype(np.uint8)
-    _, labels, stats, centroids = cv2.connectedComponentsWithStats(mask, connectivity=8)
-    inside = cv2.erode(allowed.astype(np.uint8), np.ones((3, 3), np.uint8)).astype(bool)
-    stats[np.unique(labels[allowed & ~inside]), 4] = 0
-    return dist, labels, stats[1:], centroids[1:]
+class _Look(NamedTuple):
+    """Where candidates are looked for: the window about the rim (its slices, and its corner
+    (u, v) in the image), the pixels allowed in it, the CIELAB distance from the platter's
+    colour a candidate has at least, and the area (px) above which a region is split."""
 
+    platter: Platter
+    box: tuple[slice, slice]
+    origin: NDArray[np.float64]
+    allowed: NDArray[np.bool_]
+    threshold: float
+    largest: float
 
-def _parts(lab_img, platter: Platter, allowed, threshold: float, largest: float):
-    """The parts of a CIELAB window that differ from the platter: (window of the part's
-    box, its mask there, the box's corner (u, v)), the 40 largest components, each larger
-    than any ball split by colour (`_split`)."""
-    _, labels, stats, _ = _components(lab_img, platter, allowed, threshold)
-    for i in np.argsort(-stats[:, 4])[:40]:
-        x, y, w, h, area = stats[i]
-        if area < 3:
-            continue
-        region = (labels[y : y + h, x : x + w] == i + 1).astype(np.uint8)
-        sub = lab_img[y : y + h, x : x + w]
-        for part in _split(sub, region) if area > largest else [region]:
-            if part.sum() >= 3:
-                yield sub, part, np.array([x, y], float), area > largest
-
-
-def _candidate(lab_img, region, platter: Platter, origin) -> Candidate | None:
-    """A region of a CIELAB window as a candidate: its centroid, area, shape, and the colour
-    of its more distinct half (a ball's, not its shadow's)."""
-    area = int(region.sum())
-    if area < 3:
-        return None
-    pix = lab_img[region.astype(bool)]
-    dist = np.linalg.norm(pix - platter.colour.astype(np.float32), axis=1)
-    colour = np.median(pix[dist >= np.median(dist)], axis=0).astype(float)
-    v, u = np.nonzero(region)
-    return Candidate(
-        float(u.mean() + origin[0]),
-        float(v.mean() + origin[1]),
-        float(area),
-        colour,
-        float(np.linalg.norm(colour - platter.colour)),
-        *_shape(region),
-    )
-
-
-def _split(lab_img, region) -> list[NDArray[np.uint8]]:
-    """A region larger than any ball (a ball touching a label, say) split by colour: three
-    k-means clusters of its CIELAB colours, each cut into its connected parts."""
-    pix = lab_img[region.astype(bool)].astype(np.float32)
-    criteria = (cv2.TERM_CRITERIA_EPS + cv2.TERM_CRITERIA_MAX_ITER, 20, 0.5)
-    cv2.setRNGSeed(0)
-    _, which, _ = cv2.kmeans(pix, 3, None, criteria, 2, cv2.KMEANS_PP_CENTERS)
-    cluster = np.full(region.shape, -1, np.int32)
-    cluster[region.astype(bool)] = which.ravel()
-    parts = []
-    for k in range(3):
-        n, labels = cv2.connectedComponents((cluster == k).astype(np.uint8), connectivity=8)
-        parts += [(labels == i).astype(np.uint8) for i in range(1, n)]
-    return parts
-
-
-def _shape(region: NDArray[np.uint8]) -> tuple[float, float]:
-    """Axis ratio of a region, from its second moments, and its solidity (`MIN_SOLIDITY`)."""
-    m = cv2.moments(region, binaryImage=True)
-    if m["m00"] < 3:
-        return 1.0, 1.0
-    a, b, c = m["mu20"] / m["m00"], m["mu11"] / m["m00"], m["mu02"] / m["m00"]
-    root = math.sqrt(max((a - c) ** 2 + 4 * b * b, 0.0))
-    lo, hi = (a + c - root) / 2, (a + c + root) / 2
-    contours, _ = cv2.findContours(region, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)
-    filled = sum(cv2.contourArea(k) + 0.5 * cv2.arcLength(k, True) for k in contours)
-    hull = cv2.convexHull(np.concatenate(contours))
-    solidity = filled / max(cv2.contourArea(hull) + 0.5 * cv2.arcLength(hull, True), 1.0)
-    return math.sqrt(hi / max(lo, 1e-9)), min(solidity, 1.0)
+    def parts(self, lab_img):
+        """`_parts` of a CIELAB window."""
+        return _parts(lab_img, self.platter, self.allowed, self.threshold, self.largest)
 
 
 def find(
@@ -216,88 +155,26 @@ def find(
         No ball, two possible balls, no mark, or a seed with nothing there; its ``found``
         holds the candidates.
     """
-    rim = platter.rim
-    shape = probe[0][1].shape
-    allowed = rim.mask(shape, 1.0 - 3.0 / rim.b)
-    box = window(rim.centre, rim.a + 3, shape)
-    origin = np.array([box[1].start, box[0].start], float)
-    lab0 = lab(probe[0][1], box)
-    ring = (rim.mask(shape, 0.9) & ~rim.mask(shape, 0.35))[box]
-    noise = float(np.median(np.linalg.norm(lab0[ring] - platter.colour.astype(np.float32), axis=1)))
-    threshold = max(CONTRAST_NOISE * noise, MIN_CONTRAST)
-    largest = AREA_RANGE[1] * _area_at(pose, rim.centre, ball_radius)
-    paths = []
-    for sub, part, corner, split in _parts(lab0, platter, allowed[box], threshold, largest):
-        c = _candidate(sub, part, platter, origin + corner)
-        if c is not None:
-            c = c._replace(split=split)
-            paths.append(_Path(c))
-            paths[-1].t.append(probe[0][0])
-            paths[-1].uv.append((c.u, c.v))
+    t0, picture0 = probe[0]
+    # 1. where candidates are looked for, and how far from the platter's colour they are
+    look, lab0 = _look(picture0, platter, pose, ball_radius)
+    # 2. the candidates of the first frame, and those at the seeds
+    paths = [_Path(c, t0) for c in _first_candidates(look, lab0)]
     seeded = {}
     for option, at in (("--ball-at", ball_at), ("--mark-at", mark_at)):
         if at is not None:
             seeded[option] = len(paths)
-            c = _seeded(lab0, origin, platter, at, 4 * math.sqrt(_area_at(pose, at, ball_radius)))
-            if c is None:
-                raise VideoError(
-                    f"{option} {at[0]:g},{at[1]:g}: nothing there differs from the platter; "
-                    "--plot shows the candidates",
-                    [p.c for p in paths],
-                )
-            paths.append(_Path(c))
-            paths[-1].t.append(probe[0][0])
-            paths[-1].uv.append((c.u, c.v))
-    seen = []
-    for t, picture in probe[1:]:
-        found = [
-            (*(np.argwhere(part)[:, ::-1].mean(axis=0) + origin + corner), part.sum())
-            for _, part, corner, _ in _parts(
-                lab(picture, box), platter, allowed[box], threshold, largest
-            )
-        ]
-        st = np.array(found, float).reshape(-1, 3)
-        cen, areas = st[:, :2], st[:, 2]
-        seen.append((t, cen, areas))
-        for p in paths:
-            if len(p.uv) < len(p.t):
-                continue  # lost: not followed further
-            near = p.predict(t)
-            step = float(np.hypot(*(near - p.uv[-1])))
-            if len(p.uv) == 1:  # as far as the fastest platter would take it
-                arm = float(np.hypot(p.c.u - rim.centre[0], p.c.v - rim.centre[1]))
-                step = RATE_RANGE[1] * arm * (t - p.t[0])
-            gate = 3.0 + 1.5 * math.sqrt(p.c.area / math.pi) + step
-            d = np.hypot(cen[:, 0] - near[0], cen[:, 1] - near[1])
-            ok = (d < gate) & (areas > 0.3 * p.c.area) & (areas < 3.3 * p.c.area)
-            if ok.any():
-                j = int(np.argmin(np.where(ok, d, np.inf)))
-                p.uv.append((float(cen[j, 0]), float(cen[j, 1])))
-            p.t.append(t)
+            paths.append(_Path(_at_seed(option, at, look, lab0, pose, ball_radius, paths), t0))
+    # 3. each followed over the probe, its path seen on the platter's plane
+    seen = _follow_probe(paths, probe[1:], look)
     planes = [_on_plane(p, len(probe), pose) for p in paths]
     candidates = [p.c for p in paths]
-    tolerance = max(0.15 * ball_radius, 1.5 * platter_radius / rim.a)
-    marks = []
-    for i, plane in enumerate(planes):
-        if plane is None:
-            continue
-        rate, centre, residual = _turning(*plane)
-        ok = RATE_RANGE[0] <= abs(rate) <= RATE_RANGE[1]
-        if rpm is not None:
-            ok = abs(abs(rate) / (rpm * math.pi / 30) - 1) < 0.05
-        if residual < tolerance and ok and abs(centre) > 0.05 * platter_radius:
-            candidates[i] = candidates[i]._replace(turns_at=abs(centre) / platter_radius)
-            marks.append((i, rate))
+    tolerance = max(RIGID_R * ball_radius, RIGID_PX * platter_radius / platter.rim.a)
+    # 4. the marks: what turns rigidly with the platter, the one seeded or those near the rim
+    marks = _turning_with_the_platter(planes, candidates, tolerance, platter_radius, rpm)
     if mark_at is not None:
         m = seeded["--mark-at"]
-        rate = dict(marks).get(m)
-        turning = None
-        if rate is None:
-            turning = _turning_through(candidates[m], probe[0][0], seen, pose, tolerance, rpm)
-        if turning is not None:
-            rate = turning[0]
-            candidates[m] = candidates[m]._replace(area=turning[1])
-        marks = [(m, rate)]
+        marks = [_seeded_mark(m, dict(marks).get(m), candidates, t0, seen, pose, tolerance, rpm)]
     else:
         marks = sorted(
             ((i, w) for i, w in marks if candidates[i].turns_at >= MARK_MIN_RADIUS),
@@ -310,25 +187,10 @@ def find(
             f"{SEED_HINT}",
             candidates,
         )
-    for m, rate in marks:
-        # the ball does not turn with the platter: not rigidly at the mark's rate
-        rigid = [
-            rate is not None and planes[i] is not None and _turning(*planes[i], rate)[2] < tolerance
-            for i in range(len(candidates))
-        ]
-        others = [c if i != m and not rigid[i] else None for i, c in enumerate(candidates)]
-        ball = seeded.get("--ball-at")
-        # of those followed over the probe and whole, if any, else split, else all
-        for keep in (
-            lambda i, c: planes[i] is not None and not c.split,
-            lambda i, c: planes[i] is not None,
-            lambda i, c: True,
-        ):
-            if ball is None:
-                chosen = [c if c is not None and keep(i, c) else None for i, c in enumerate(others)]
-                ball = _choose_ball(chosen, pose, ball_radius)
-        if ball is not None:
-            break
+    # 5. the ball: what does not turn with the mark, of a ball's size and shape
+    m, rate, ball = _ball_and_its_mark(
+        marks, planes, candidates, seeded.get("--ball-at"), pose, ball_radius, tolerance
+    )
     if ball is None:
         expected = _area_at(pose, pose.principal, ball_radius)
         raise VideoError(
@@ -349,10 +211,137 @@ def find(
     )
 
 
+def _look(picture: Picture, platter: Platter, pose: Pose, ball_radius: float):
+    """The `_Look` of the first frame, and the frame's CIELAB window: the contrast a candidate
+    has is `CONTRAST_NOISE` times the platter's grain (its median distance from its own
+    colour), and `MIN_CONTRAST` at least; a region larger than the largest ball is split."""
+    rim = platter.rim
+    shape = picture.shape
+    allowed = rim.mask(shape, 1.0 - RIM_MARGIN_PX / rim.b)
+    box = window(rim.centre, rim.a + RIM_MARGIN_PX, shape)
+    origin = np.array([box[1].start, box[0].start], float)
+    lab0 = lab(picture, box)
+    ring = (rim.mask(shape, GRAIN_RING[1]) & ~rim.mask(shape, GRAIN_RING[0]))[box]
+    noise = float(np.median(np.linalg.norm(lab0[ring] - platter.colour.astype(np.float32), axis=1)))
+    threshold = max(CONTRAST_NOISE * noise, MIN_CONTRAST)
+    largest = AREA_RANGE[1] * _area_at(pose, rim.centre, ball_radius)
+    return _Look(platter, box, origin, allowed[box], threshold, largest), lab0
+
+
+def _first_candidates(look: _Look, lab0) -> list[Candidate]:
+    """The candidates of the first frame."""
+    out = []
+    for sub, part, corner, split in look.parts(lab0):
+        c = _candidate(sub, part, look.platter, look.origin + corner)
+        if c is not None:
+            out.append(c._replace(split=split))
+    return out
+
+
+def _at_seed(option, at, look: _Look, lab0, pose, ball_radius, paths) -> Candidate:
+    """The candidate at a seed; refused if nothing there differs from the platter."""
+    reach = SEED_REACH * math.sqrt(_area_at(pose, at, ball_radius))
+    c = _seeded(lab0, look.origin, look.platter, at, reach)
+    if c is None:
+        raise VideoError(
+            f"{option} {at[0]:g},{at[1]:g}: nothing there differs from the platter; "
+            "--plot shows the candidates",
+            [p.c for p in paths],
+        )
+    return c
+
+
+def _follow_probe(paths: list[_Path], probe, look: _Look) -> list:
+    """Follow each path over the probe's frames (a path lost is not followed further);
+    return, for each frame, its time, the blobs' centres (n, 2) and their areas."""
+    centre = look.platter.rim.centre
+    seen = []
+    for t, picture in probe:
+        found = [
+            (*(np.argwhere(part)[:, ::-1].mean(axis=0) + look.origin + corner), part.sum())
+            for _, part, corner, _ in look.parts(lab(picture, look.box))
+        ]
+        st = np.array(found, float).reshape(-1, 3)
+        cen, areas = st[:, :2], st[:, 2]
+        seen.append((t, cen, areas))
+        for p in paths:
+            if len(p.uv) < len(p.t):
+                continue
+            near = p.predict(t)
+            step = float(np.hypot(*(near - p.uv[-1])))
+            if len(p.uv) == 1:  # as far as the fastest platter would take it
+                arm = float(np.hypot(p.c.u - centre[0], p.c.v - centre[1]))
+                step = RATE_RANGE[1] * arm * (t - p.t[0])
+            gate = GATE_PX + GATE_RADII * math.sqrt(p.c.area / math.pi) + step
+            d = np.hypot(cen[:, 0] - near[0], cen[:, 1] - near[1])
+            ok = (
+                (d < gate) & (areas > PROBE_AREA[0] * p.c.area) & (areas < PROBE_AREA[1] * p.c.area)
+            )
+            if ok.any():
+                j = int(np.argmin(np.where(ok, d, np.inf)))
+                p.uv.append((float(cen[j, 0]), float(cen[j, 1])))
+            p.t.append(t)
+    return seen
+
+
+def _turning_with_the_platter(planes, candidates, tolerance, platter_radius, rpm):
+    """The candidates whose paths turn rigidly about the axis, at a rate a platter can have
+    (within `RPM_AGREE` of ``--rpm``), off the axis: [(index, rate)]; each one's distance
+    from the axis set in ``candidates`` (``turns_at``)."""
+    marks = []
+    for i, plane in enumerate(planes):
+        if plane is None:
+            continue
+        rate, centre, residual = _turning(*plane)
+        ok = RATE_RANGE[0] <= abs(rate) <= RATE_RANGE[1]
+        if rpm is not None:
+            ok = abs(abs(rate) / (rpm * math.pi / 30) - 1) < RPM_AGREE
+        if residual < tolerance and ok and abs(centre) > OFF_AXIS * platter_radius:
+            candidates[i] = candidates[i]._replace(turns_at=abs(centre) / platter_radius)
+            marks.append((i, rate))
+    return marks
+
+
+def _seeded_mark(m, rate, candidates, t0, seen, pose, tolerance, rpm):
+    """The seeded mark and its rate: its own if it turns, else that of what turns out of it
+    (`_turning_through`, its area then set in ``candidates``), else None."""
+    if rate is None:
+        turning = _turning_through(candidates[m], t0, seen, pose, tolerance, rpm)
+        if turning is not None:
+            rate = turning[0]
+            candidates[m] = candidates[m]._replace(area=turning[1])
+    return m, rate
+
+
+def _ball_and_its_mark(marks, planes, candidates, ball, pose, ball_radius, tolerance):
+    """The first of the ``marks`` (index, rate) with a ball, and the ball (``ball`` if
+    seeded): of the candidates that do not turn rigidly at its rate, those followed over the
+    probe and whole, if any, else split, else all (`_choose_ball`)."""
+    m, rate, seeded = None, None, ball
+    for m, rate in marks:
+        rigid = [
+            rate is not None and planes[i] is not None and _turning(*planes[i], rate)[2] < tolerance
+            for i in range(len(candidates))
+        ]
+        others = [c if i != m and not rigid[i] else None for i, c in enumerate(candidates)]
+        ball = seeded
+        for keep in (
+            lambda i, c: planes[i] is not None and not c.split,
+            lambda i, c: planes[i] is not None,
+            lambda i, c: True,
+        ):
+            if ball is None:
+                chosen = [c if c is not None and keep(i, c) else None for i, c in enumerate(others)]
+                ball = _choose_ball(chosen, pose, ball_radius)
+        if ball is not None:
+            break
+    return m, rate, ball
+
+
 def _on_plane(p: _Path, frames: int, pose: Pose) -> tuple[NDArray, NDArray] | None:
     """A candidate's times and positions on the platter's plane (x + i y), if it was followed
     over most of the probe."""
-    if len(p.uv) < max(0.6 * frames, 3):
+    if len(p.uv) < max(MIN_FOLLOWED * frames, 3):
         return None
     q = camera.back_project(pose, np.array(p.uv))
     return np.array(p.t[: len(p.uv)]), q[:, 0] + 1j * q[:, 1]
@@ -384,9 +373,8 @@ def _turning_through(c: Candidate, t0: float, seen, pose: Pose, tolerance: float
         rates += list(np.angle(z[near] / z0) / (t - t0))
         sizes += list(areas[small][near])
         frames += [k] * int(near.sum())
-    low, high = (
-        RATE_RANGE if rpm is None else (0.95 * rpm * math.pi / 30, 1.05 * rpm * math.pi / 30)
-    )
+    given = None if rpm is None else rpm * math.pi / 30
+    low, high = RATE_RANGE if given is None else ((1 - RPM_AGREE) * given, (1 + RPM_AGREE) * given)
     best, agree = None, []
     for w in rates:
         if low <= abs(w) <= high:
@@ -401,36 +389,6 @@ def _turning_through(c: Candidate, t0: float, seen, pose: Pose, tolerance: float
 def _area_at(pose: Pose, uv: tuple[float, float], ball_radius: float) -> float:
     """Area (px) of the image of a ball of radius R seen at ``uv``."""
     return math.pi * float(camera.image_radius(pose, [uv], ball_radius)[0]) ** 2
-
-
-def _seeded(lab_img, origin, platter: Platter, at, reach: float) -> Candidate | None:
-    """The candidate at a seed: the pixels about it nearer its colour than the platter's."""
-    u, v = round(at[0] - origin[0]), round(at[1] - origin[1])
-    h, w = lab_img.shape[:2]
-    if not (2 <= u < w - 2 and 2 <= v < h - 2):
-        return None
-    colour = np.median(lab_img[v - 2 : v + 3, u - 2 : u + 3].reshape(-1, 3), axis=0).astype(float)
-    contrast = float(np.linalg.norm(colour - platter.colour))
-    if contrast < MIN_CONTRAST:
-        return None
-    box = window((u, v), reach, (h, w))
-    share = Colour(colour, platter.colour).share(lab_img[box])
-    _, labels, stats, centroids = cv2.connectedComponentsWithStats(
-        (share > THRESHOLD).astype(np.uint8), connectivity=8
-    )
-    i = labels[v - box[0].start, u - box[1].start]
-    if i == 0:
-        return None
-    region = (labels == i).astype(np.uint8)
-    pix = lab_img[box][region.astype(bool)]
-    return Candidate(
-        float(centroids[i][0] + box[1].start + origin[0]),
-        float(centroids[i][1] + box[0].start + origin[1]),
-        float(stats[i][4]),
-        np.median(pix, axis=0).astype(float),
-        contrast,
-        *_shape(region),
-    )
 
 
 def _choose_ball(others, pose, ball_radius) -> int | None:
@@ -448,7 +406,7 @@ def _choose_ball(others, pose, ball_radius) -> int | None:
     ok.sort(key=lambda i: -others[i].contrast)
     if len(ok) > 1:
         a, b = others[ok[0]], others[ok[1]]
-        if b.contrast > 0.8 * a.contrast and b.area > 0.6 * a.area:
+        if b.contrast > RIVAL_CONTRAST * a.contrast and b.area > RIVAL_AREA * a.area:
             raise VideoError(
                 f"two things could be the ball, at ({a.u:.0f}, {a.v:.0f}) and ({b.u:.0f}, "
                 f"{b.v:.0f}) px: give the ball's pixel of the first frame with --ball-at U,V",

@@ -22,18 +22,36 @@ from turntable.video import camera
 from turntable.video.blobs import Blob, Colour, blobs, merged_ball
 from turntable.video.camera import Pose
 from turntable.video.decode import Picture, VideoError, lab, rgb, window
-from turntable.video.find import Candidate, Found
+from turntable.video.find import RIM_MARGIN_PX, Candidate, Found
 from turntable.video.platter import Ellipse, Platter, rim_points_again
 from turntable.video.seeds import Seed
 
-#: Rim points are collected on this many frames, spread over the video.
-RIM_FRAMES = 12
-#: The ball's blob is taken within these factors of its area on the first frame.
-BALL_AREA = (0.5, 1.7)
+#: Rim points are collected on this many frames, spread over the video (every
+#: ``RIM_EVERY`` frames where the video does not say how many it has).
+RIM_FRAMES, RIM_EVERY = 12, 30
+#: The ball's blob is taken within these factors of its area where first found, or of its
+#: area on the first frame, until it is found (``BALL_AREA_FIRST``: the probe's blobs are
+#: cut at another threshold).
+BALL_AREA, BALL_AREA_FIRST = (0.5, 1.7), (0.4, 2.5)
+#: The ball's window reaches ``BALL_WINDOW`` of its radii and ``WINDOW_PX`` px about where it
+#: is predicted, and its step and 2 radii more for each frame it is not found.
+BALL_WINDOW, WINDOW_PX = 2.5, 4.0
 #: A lost ball is looked for where its last step leads over at most this many frames.
 COAST = 5
-#: The mark's blob within these factors of its own.
-MARK_AREA = (0.25, 4.0)
+#: The mark's blob within these factors of its own (``MARK_AREA_FIRST`` until found).
+MARK_AREA, MARK_AREA_FIRST = (0.25, 4.0), (0.2, 5.0)
+#: The mark's window reaches ``MARK_WINDOW`` of its radii and `WINDOW_PX` px about where it
+#: is predicted, and its step (2 px more) for each frame since it was found.
+MARK_WINDOW = 3.0
+#: A blob is taken for the nearest to the prediction, its distance (px) and this many times
+#: its area's log-ratio to the expected one added.
+AREA_WEIGHT = 3.0
+#: The ball's and the mark's images may touch within this many px more than their radii:
+#: neither is measured then.
+TOUCH_PX = 4.0
+#: The ball is inside the image where it lies ``EDGE_RADII`` of its radii and ``EDGE_PX`` px
+#: from its edge.
+EDGE_RADII, EDGE_PX = 1.5, 2.0
 #: The ball or the mark not found for at least this long (s) and this many frames is lost,
 #: not in a gap: where it is is no longer predicted well enough to take the next blob of its
 #: colour for it.  A seed in a later frame (`turntable.video.seeds`) follows it from there.
@@ -189,12 +207,14 @@ def _pick(found: list[Blob], near: NDArray, area: float | None, factors) -> Blob
         return None
     return min(
         ok,
-        key=lambda b: math.hypot(b.u - near[0], b.v - near[1]) + 3 * abs(math.log(b.area / area)),
+        key=lambda b: (
+            math.hypot(b.u - near[0], b.v - near[1]) + AREA_WEIGHT * abs(math.log(b.area / area))
+        ),
     )
 
 
 def _inside_image(b: Blob, shape: tuple[int, int], r_px: float) -> bool:
-    m = 1.5 * r_px + 2
+    m = EDGE_RADII * r_px + EDGE_PX
     return m < b.u < shape[1] - 1 - m and m < b.v < shape[0] - 1 - m
 
 
@@ -225,49 +245,79 @@ def follow(
         or not found at a seed.  Its ``found`` is a `LostAt` where one of them was lost.
     """
     seeds = seeds or Seeds({}, {})
-    rim = platter.rim
-    every = max(frame_count // RIM_FRAMES, 1) if frame_count else 30
-    sizes = _Sizes(math.sqrt(found.ball.area / math.pi), math.sqrt(found.mark.area / math.pi))
-    ball = _State(np.array([found.ball.u, found.ball.v]))
-    mark = _Turning(np.array([found.mark.u, found.mark.v]), rim, found.mark_rate)
-    times, ball_uv, areas, mark_uv, rim_pts = [], [], [], [], [rim_points]
-    allowed = None
+    run = _Run(frame_count, platter, rim_points, found, mark_step, pose, ball_radius, seeds)
     index = -1
     for index, t, picture in frames:
-        if allowed is None:
-            allowed = rim.mask(picture.shape, 1.0 - 3.0 / rim.b)
-        times.append(t)
-        if index % every == 0 and index:
-            rim_pts.append(rim_points_again(platter.level(lab(picture)), rim))
+        run.frame(index, t, picture)
+    _refuse_seeds_past_the_end(seeds, index)
+    return run.paths()
+
+
+class _Run:
+    """Following through the frames: the ball's and the mark's states, and what each frame
+    adds to the paths."""
+
+    def __init__(  # the arguments of `follow`
+        self, frame_count, platter, rim_points, found, mark_step, pose, ball_radius, seeds
+    ) -> None:
+        rim = platter.rim
+        self.platter, self.found, self.seeds = platter, found, seeds
+        self.mark_step, self.pose, self.ball_radius = mark_step, pose, ball_radius
+        self.every = max(frame_count // RIM_FRAMES, 1) if frame_count else RIM_EVERY
+        self.sizes = _Sizes(
+            math.sqrt(found.ball.area / math.pi), math.sqrt(found.mark.area / math.pi)
+        )
+        self.ball = _State(np.array([found.ball.u, found.ball.v]))
+        self.mark = _Turning(np.array([found.mark.u, found.mark.v]), rim, found.mark_rate)
+        self.times, self.ball_uv, self.areas, self.mark_uv = [], [], [], []
+        self.rim_pts = [rim_points]
+        self.allowed = None
+
+    def frame(self, index: int, t: float, picture: Picture) -> None:
+        """Follow both on one frame."""
+        ball, mark, found, seeds = self.ball, self.mark, self.found, self.seeds
+        rim = self.platter.rim
+        if self.allowed is None:
+            self.allowed = rim.mask(picture.shape, 1.0 - RIM_MARGIN_PX / rim.b)
+        self.times.append(t)
+        # the rim's points, on frames spread over the video
+        if index % self.every == 0 and index:
+            self.rim_pts.append(rim_points_again(self.platter.level(lab(picture)), rim))
+        # a seed of this frame puts the ball or the mark where it says
         _reseed(ball, seeds.ball.get(index))
         _reseed(mark, seeds.mark.get(index))
-        got = None
+        # the ball, refused at the rim or the image's edge; the mark, unless it touches it
+        got = m = None
         if not ball.given_up:
-            got = _ball_blob(picture, ball, found, allowed, pose, ball_radius, sizes, rim.a)
-            _refuse_at_the_edge(got, picture, sizes.ball, index, t)
-        m = None
+            r = (self.pose, self.ball_radius, self.sizes, rim.a)
+            got = _ball_blob(picture, ball, found, self.allowed, *r)
+            _refuse_at_the_edge(got, picture, self.sizes.ball, index, t)
         if not mark.given_up:
-            got, m = _mark_blob(picture, mark, found, allowed, got, sizes, mark_step, t)
+            r = (got, self.sizes, self.mark_step, t)
+            got, m = _mark_blob(picture, mark, found, self.allowed, *r)
         for state, blob in ((ball, got), (mark, m)):
             if blob is None:
                 state.miss(index, t, picture)
             else:
                 state.found(np.array([blob.u, blob.v]), blob.area, t)
-        ball_uv.append((math.nan, math.nan) if got is None else (got.u, got.v))
-        areas.append(math.nan if got is None else got.area)
-        mark_uv.append((math.nan, math.nan) if m is None else (m.u, m.v))
+        self.ball_uv.append((math.nan, math.nan) if got is None else (got.u, got.v))
+        self.areas.append(math.nan if got is None else got.area)
+        self.mark_uv.append((math.nan, math.nan) if m is None else (m.u, m.v))
+        # a seed where nothing is found, or one of them lost for longer than a gap can be
         _check_seeded(seeds, index, got, m, found, picture)
         _give_up_or_refuse(ball, "ball", seeds.ball, index, t, found, ball, mark)
         _give_up_or_refuse(mark, "mark", seeds.mark, index, t, found, ball, mark)
-    _refuse_seeds_past_the_end(seeds, index)
-    return Paths(
-        np.array(times),
-        np.array(ball_uv).reshape(-1, 2),
-        np.array(areas),
-        np.array(mark_uv).reshape(-1, 2),
-        np.vstack(rim_pts),
-        len(rim_pts),
-    )
+
+    def paths(self) -> Paths:
+        """What the frames so far give."""
+        return Paths(
+            np.array(self.times),
+            np.array(self.ball_uv).reshape(-1, 2),
+            np.array(self.areas),
+            np.array(self.mark_uv).reshape(-1, 2),
+            np.vstack(self.rim_pts),
+            len(self.rim_pts),
+        )
 
 
 class _Sizes(NamedTuple):
@@ -283,7 +333,7 @@ def _ball_blob(picture, ball, found: Found, allowed, pose, ball_radius, sizes: _
     near = ball.predict()
     v = ball.speed()
     r_px = sizes.ball
-    half = 2.5 * r_px + 4 + (ball.misses + 1) * (0 if v is None else v + 2 * r_px)
+    half = BALL_WINDOW * r_px + WINDOW_PX + (ball.misses + 1) * (0 if v is None else v + 2 * r_px)
     half = min(half, reach)  # a ball lost for long: looked for about where it was
     box = window(tuple(near), half, picture.shape)
     radius = float(camera.image_radius(pose, near, ball_radius)[0])
@@ -295,7 +345,7 @@ def _ball_blob(picture, ball, found: Found, allowed, pose, ball_radius, sizes: _
         ],
         near,
         ball.reference_area(found.ball.area),
-        BALL_AREA if ball.area else (0.4, 2.5),
+        BALL_AREA if ball.area else BALL_AREA_FIRST,
     )
     if got is None:
         got = merged_ball(picture, box, found.ball_colour, near, radius)
@@ -319,9 +369,11 @@ def _mark_blob(picture, mark: _Turning, found: Found, allowed, got, sizes: _Size
     near = mark.predict()
     v = mark.speed()
     r_px, r_mark = sizes
-    if got is not None and math.hypot(got.u - near[0], got.v - near[1]) < r_px + r_mark + 4:
+    if got is not None and math.hypot(got.u - near[0], got.v - near[1]) < r_px + r_mark + TOUCH_PX:
         return None, None
-    half = 3 * r_mark + 4 + (mark_step if v is None else v + 2) * (mark.misses + 1)
+    half = (
+        MARK_WINDOW * r_mark + WINDOW_PX + (mark_step if v is None else v + 2) * (mark.misses + 1)
+    )
     box = window(tuple(near), half, picture.shape)
     candidates = [
         b
@@ -333,7 +385,7 @@ def _mark_blob(picture, mark: _Turning, found: Found, allowed, got, sizes: _Size
         candidates,
         near,
         mark.reference_area(found.mark.area),
-        MARK_AREA if mark.area else (0.2, 5.0),
+        MARK_AREA if mark.area else MARK_AREA_FIRST,
     )
     return got, m
 

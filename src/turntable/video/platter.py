@@ -17,10 +17,28 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
+from turntable.video.robust import inliers
+
 try:
     import cv2
 except ImportError:  # without the extra [video]: the module imports, its functions do not run
     cv2 = None
+
+#: The rim's outline is a region's within this share of its fitted ellipse's area.
+ELLIPSE_AREA = 0.05
+#: A platter covers at least this share of the image; its outline has this many points.
+MIN_PLATTER_SHARE, MIN_OUTLINE = 0.02, 20
+#: The platter's colour is measured between these shares of the rim (a label at its centre
+#: left out), the surroundings' between these (the rim's own edge left out).
+PLATTER_RING, OUTSIDE_RING = (0.35, 0.9), (1.05, 1.15)
+#: The rim is fitted this many times to its points; a point more than ``RIM_SPREADS``
+#: spreads (`turntable.video.robust.inliers`) off it is left out (the ball or the mark at
+#: the rim), the spread at least ``RIM_FLOOR`` px (a rim to a twentieth of a pixel is not cut
+#: finer); with fewer than ``MIN_RIM_POINTS`` points, it is not fitted again.
+RIM_ROUNDS, RIM_SPREADS, RIM_FLOOR, MIN_RIM_POINTS = 3, 4.0, 0.05, 20
+#: On later frames, the rim's points within this (px) of the rim (the ball or the mark at the
+#: rim left out).
+RIM_AGAIN_PX = 1.5
 
 
 class Ellipse(NamedTuple):
@@ -93,16 +111,18 @@ def find_rim(lab: NDArray[np.float32]) -> Ellipse | None:
                 x, y, w, h, area = stats[i]
                 if x == 0 or y == 0 or x + w >= width or y + h >= height:
                     continue
-                if area < 0.02 * height * width or (best is not None and area < best[0]):
+                if area < MIN_PLATTER_SHARE * height * width or (
+                    best is not None and area < best[0]
+                ):
                     continue
                 region = (labels[y : y + h, x : x + w] == i).astype(np.uint8)
                 contours, _ = cv2.findContours(region, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)
                 contour = max(contours, key=len)
-                if len(contour) < 20:
+                if len(contour) < MIN_OUTLINE:
                     continue
                 e = fit_ellipse(contour[:, 0, :].astype(float) + np.array([x, y]))
                 filled = cv2.contourArea(contour)
-                if abs(filled / (math.pi * e.a * e.b) - 1) < 0.05 and (
+                if abs(filled / (math.pi * e.a * e.b) - 1) < ELLIPSE_AREA and (
                     best is None or filled > best[0]
                 ):
                     best = (filled, e)
@@ -113,8 +133,8 @@ def platter_colours(lab: NDArray[np.float32], rim: Ellipse) -> Platter:
     """The median colours of the platter (between 0.35 and 0.9 of the rim: a label at its
     centre left out) and of a ring just outside the rim."""
     shape = lab.shape[:2]
-    inner = rim.mask(shape, 0.9) & ~rim.mask(shape, 0.35)
-    ring = rim.mask(shape, 1.15) & ~rim.mask(shape, 1.05)
+    inner = rim.mask(shape, PLATTER_RING[1]) & ~rim.mask(shape, PLATTER_RING[0])
+    ring = rim.mask(shape, OUTSIDE_RING[1]) & ~rim.mask(shape, OUTSIDE_RING[0])
     if not ring.any():
         ring = ~rim.mask(shape, 1.0)
     return Platter(
@@ -162,17 +182,14 @@ def rim_points(
 def refine_rim(level: NDArray[np.float32], rim: Ellipse) -> tuple[Ellipse, NDArray]:
     """The rim fitted again to its points to a fraction of a pixel, outliers (the ball or
     the mark at the rim) left out; returns the ellipse and the points kept."""
-    from scipy.stats import median_abs_deviation
-
     pts = rim_points(level, rim)
-    for k in range(3):
-        if len(pts) < 20:
+    for k in range(RIM_ROUNDS):
+        if len(pts) < MIN_RIM_POINTS:
             break
         rim = fit_ellipse(pts)
         dev = (rim.radius(pts) - 1.0) * rim.b
-        spread = median_abs_deviation(dev, scale="normal") + 0.05
-        pts = pts[np.abs(dev) < 4 * spread]
-        pts = rim_points(level, rim) if k == 0 else pts
+        pts = pts[inliers(dev, RIM_SPREADS, RIM_FLOOR)]
+        pts = rim_points(level, rim) if k == 0 else pts  # sampled again about the first fit
     return rim, pts
 
 
@@ -180,7 +197,7 @@ def rim_points_again(level: NDArray[np.float32], rim: Ellipse) -> NDArray[np.flo
     """The rim's points on a later frame, those within 1.5 px of ``rim`` (the ball or the
     mark at the rim left out)."""
     pts = rim_points(level, rim)
-    return pts[np.abs((rim.radius(pts) - 1.0) * rim.b) < 1.5]
+    return pts[np.abs((rim.radius(pts) - 1.0) * rim.b) < RIM_AGAIN_PX]
 
 
 def find_platter(lab: NDArray[np.float32]) -> tuple[Platter, NDArray[np.float64]] | None:

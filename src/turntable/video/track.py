@@ -43,6 +43,11 @@ __all__ = ["FirstLook", "Track", "track_video"]
 
 #: Fewest frames in which the mark, and the ball, must be found.
 MIN_MARK_FRAMES = 10
+#: The probe (`turntable.video.find`) has at most this many frames, whatever the frame rate.
+MAX_PROBE_FRAMES = 120
+#: Before its rate is measured, the mark may turn this fast (rad/s, 76 rpm; or as ``--rpm``
+#: says), at a frame rate of ``FRAME_RATE`` where the video does not say.
+FAST_RATE, FRAME_RATE = 8.0, 30.0
 #: The platter differs from what surrounds it by at least this (CIELAB distance).
 MIN_RIM_CONTRAST = 8.0
 #: A warning where the camera's distance, which the ball's height above the platter is seen
@@ -247,7 +252,7 @@ def _track(video, frames, ball_radius, platter_radius, rpm, ball_at, mark_at):
     for index, t, picture in frames:
         probe.append((index, t, picture.copy()))
         enough = len(probe) >= PROBE_FRAMES and t - probe[0][1] >= PROBE_SECONDS
-        if enough or len(probe) >= 120:
+        if enough or len(probe) >= MAX_PROBE_FRAMES:
             break
     try:
         found = find(
@@ -263,7 +268,8 @@ def _track(video, frames, ball_radius, platter_radius, rpm, ball_at, mark_at):
     except VideoError as exc:
         raise VideoError(str(exc), FirstLook(image, platter.rim, exc.found or [])) from None
     look = FirstLook(image, platter.rim, found.candidates)
-    mark_step = (rpm / 60 * 2 * math.pi if rpm else 8.0) * platter.rim.a / (info.rate or 30.0)
+    fastest = rpm / 60 * 2 * math.pi if rpm else FAST_RATE
+    mark_step = fastest * platter.rim.a / (info.rate or FRAME_RATE)
     try:
         paths = follow(
             itertools.chain(probe, frames),
@@ -352,20 +358,20 @@ def _finish(info, paths: Paths, cal, results, look, ball_radius, platter_radius,
             )
     film = Film(cal.times(t[ok], paths.ball[ok, 1]), xy[:, 0], xy[:, 1], synthetic=info.synthetic)
     track = Track(
-        film,
-        cal,
-        info,
-        lost,
-        paths.ball,
-        paths.mark,
-        look.rim,
-        look.image,
-        mirrored,
-        t,
-        ball_radius,
-        platter_radius,
-        results,
-        look.candidates,
+        film=film,
+        calibration=cal,
+        info=info,
+        lost=lost,
+        image=paths.ball,
+        mark_image=paths.mark,
+        rim=look.rim,
+        first_frame=look.image,
+        mirrored=mirrored,
+        times=t,
+        ball_radius=ball_radius,
+        platter_radius=platter_radius,
+        checks=results,
+        candidates=look.candidates,
     )
     note = lens_note(track)
     return track, warnings + ([note] if note else [])

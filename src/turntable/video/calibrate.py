@@ -1,19 +1,21 @@
-"""Stage 5, the camera: from the rim of the platter and a mark turning with it.
+r"""Stage 5, the camera: from the rim of the platter and a mark turning with it.
 
-The rim is a circle of radius P in the plane z = 0; the mark, a point of the platter at a
-distance r_m from the axis, is at the angle phi0 + Omega t.  ``calibrate`` fits, by least
-squares, a pinhole camera (`turntable.video.camera`: focal length, tilt, roll, look-at
-point, distance; the principal point at the image's centre, square pixels) together with
-r_m, phi0 and Omega, to the image points of the rim and the tracked image of the mark, and
-a rolling shutter's readout time: the mark at row v of a frame is seen at that frame's time
-plus readout v / height.
+The rim is a circle of radius :math:`P` in the plane :math:`z = 0`; the mark, a point of the
+platter at a distance :math:`r_m` from the axis, is at the angle :math:`\varphi_0 + \Omega
+t`. ``calibrate`` fits, by least squares, a pinhole camera (`turntable.video.camera`: focal
+length, tilt, roll, look-at point, distance; the principal point at the image's centre,
+square pixels) together with :math:`r_m`, :math:`\varphi_0` and :math:`\Omega`, to the image
+points of the rim and the tracked image of the mark, and a rolling shutter's readout time:
+the mark at row v of a frame is seen at that frame's time plus :math:`\text{readout} \cdot v
+/ \text{height}`.
 The rim alone (an ellipse: five numbers) cannot fix the camera's perspective; the mark's
-uniform turning fixes the rest, and the axis's image with it.  Priors keep the focal
-length (ln f within 0.3 of ln of the image's width: a field of view of 40 to 70 degrees) and
-the roll (within 1 rad of its start) defined where the data cannot: a camera looking
-straight down, whose image does not depend on them.  The rim's ellipse is weighed as known to
-a thousandth of its size at best (``RIM_BIAS``): weighed as its many points would have it,
-its small biases set the tilt of such a camera, and the rest of the camera follows them.
+uniform turning fixes the rest, and the axis's image with it. Priors keep the focal length
+(:math:`\ln f` within 0.3 of the logarithm of the image's width: a field of view of 40 to 70
+degrees) and the roll (within 1 rad of its start) defined where the data cannot: a camera
+looking straight down, whose image does not depend on them. The rim's ellipse is weighed as
+known to a thousandth of its size at best (``RIM_BIAS``): weighed as its many points would
+have it, its small biases set the tilt of such a camera, and the rest of the camera follows
+them.
 
 The lens's radial distortion k1 (`turntable.video.camera.Pose`) is measured on the mark's
 track alone: thousands of images, over several turns, of a point turning uniformly on one
@@ -21,7 +23,8 @@ circle of the platter's plane, which a pinhole sees on an ellipse and a bending 
 not.  The rim's edge would pass its own bias to k1: up to a pixel on the near side, from the
 platter's side and its shadow.  The camera is fitted again with that k1 where the mark
 measures it to a tenth (``LENS_Z``); elsewhere the lens is a pinhole's, with k1 known only
-to within sqrt(k1^2 + se^2) of 0 (k1 and se as the mark measures them), which the standard
+to within :math:`\sqrt{k_1^2 + s_e^2}` of 0 (:math:`k_1` and its standard error :math:`s_e` as the
+mark measures them), which the standard
 errors of the camera and the covariance of the parameters carry (``Lens``).
 """
 

@@ -103,7 +103,7 @@ class Track(NamedTuple):
     times : numpy.ndarray
         Time of every frame, s from the first.
     ball_radius, platter_radius : float
-        R and P, m.
+        :math:`R` and :math:`P`, m.
     checks : dict
         Every check of `turntable.video.check` (all passed), with its value and limit.
     candidates : list of Candidate
@@ -160,7 +160,7 @@ def track_video(
     path : str or path-like
         The video (any container and codec that PyAV reads).
     ball_radius, platter_radius : float
-        R and P, m.
+        :math:`R` and :math:`P`, m.
     rpm : float, optional
         The platter's rate as given: the mark must turn within 1 % of it (a warning if they
         differ by more than 4 standard errors and 0.1 %).

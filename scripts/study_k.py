@@ -17,7 +17,7 @@ from turntable.study import section2_checks
 
 logging.basicConfig(filename=snakemake.log[0], level=logging.INFO, filemode="w")
 p = snakemake.params
-k = float(snakemake.wildcards.k)
+k = p.k
 mu0 = np.geomspace(*p.mu0_range, p.n_points)
 t = np.linspace(*p.t_span, p.n_times)
 

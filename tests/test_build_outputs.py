@@ -295,7 +295,7 @@ def test_one_job_per_k_with_the_slurm_profile(build_record: tuple[Path, dict]) -
     assert counts["study_k"] == len(config["study"]["k"])
     assert counts["study"] == 1
     for k in config["study"]["k"]:
-        assert f"results/study/k_{k}.json" in plan
+        assert f"results/study/k_{k:.6g}.json" in plan
     jobs = plan.split("\nrule ")[1:]
     study_jobs = [job for job in jobs if job.startswith("study_k:")]
     assert len(study_jobs) == len(config["study"]["k"])

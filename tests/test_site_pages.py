@@ -27,8 +27,8 @@ FIGURES = ["animation", *yaml.safe_load((ROOT / "workflow" / "figures.yaml").rea
         ("-3.00700498427604 and 0.00018852858805378786", "-3.007 and 0.0001885"),
         ("1e-05, 2.5e-07, 1.25e-3, 12 and 0.2500", "1e-05, 2.5e-07, 1.25e-3, 12 and 0.2500"),
         (
-            "v0.2.0, fig4.png, study_k_0.6666666666666666",
-            "v0.2.0, fig4.png, study_k_0.6666666666666666",
+            "v0.2.0, fig4.png, study_k_0.666667",
+            "v0.2.0, fig4.png, study_k_0.666667",
         ),
     ],
 )
@@ -68,13 +68,13 @@ def test_notebooks_titled_and_in_the_order_of_the_article(
     built.mkdir()
     monkeypatch.setattr(site_pages, "NOTEBOOKS", built)
     monkeypatch.setattr(site_pages, "SITE_NOTEBOOKS", site)
-    for name in [*reversed(FIGURES), "study_k_0.6666666666666666", "claims_report"]:
+    for name in [*reversed(FIGURES), "study_k_0.666667", "claims_report"]:
         _notebook(built / f"{name}.ipynb")
     site_pages.notebooks()
 
     toc = (out / "notebooks.rst").read_text().split()
     entries = [e.removeprefix("/notebooks/") for e in toc if e.startswith("/notebooks/")]
-    assert entries == [*FIGURES, "claims_report", "study_k_0.6666666666666666"]
+    assert entries == [*FIGURES, "claims_report", "study_k_0.666667"]
 
     def first_cell(name: str) -> str:
         cells = json.loads((site / f"{name}.ipynb").read_text())["cells"]
@@ -84,8 +84,8 @@ def test_notebooks_titled_and_in_the_order_of_the_article(
     assert first_cell("fig4_trajectories").startswith("# Figure 4: notebook\n")
     assert "`scripts/fig4_trajectories.py`" in first_cell("fig4_trajectories")
     assert "{ref}`the figure <fig4_trajectories>`" in first_cell("fig4_trajectories")
-    assert first_cell("study_k_0.6666666666666666").startswith("# study_k (0.6667)\n")
-    assert "`scripts/study_k.py`" in first_cell("study_k_0.6666666666666666")
+    assert first_cell("study_k_0.666667").startswith("# study_k (0.6667)\n")
+    assert "`scripts/study_k.py`" in first_cell("study_k_0.666667")
 
     (built / "fig4_trajectories.ipynb").unlink()
     with pytest.raises(SystemExit, match=r"fig4_trajectories\.ipynb: missing; run make notebooks"):

@@ -8,7 +8,9 @@ NOTEBOOKS = []
 for _job in [r for r in list(workflow.rules) if "script" in r.input.keys()]:
     _wildcards = "".join(f"_{{{w}}}" for w in _job.wildcard_names)
     _stem = f"{Path(_job.input.script).stem}{_wildcards}"
-    NOTEBOOKS += dict.fromkeys(expand(f"results/notebooks/{_stem}.ipynb", k=STUDY_K))
+    NOTEBOOKS += dict.fromkeys(
+        expand(f"results/notebooks/{_stem}.ipynb", k=list(STUDY_K))
+    )
 
     rule:
         name:

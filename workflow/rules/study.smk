@@ -2,7 +2,8 @@
 # k (on a cluster, each its own job), gathered into results/study/summary.json and a figure.
 import re
 
-STUDY_K = [str(k) for k in config["study"]["k"]]
+# Each inertia ratio by the name of its files, to six significant digits (k_0.666667).
+STUDY_K = {f"{k:.6g}": k for k in config["study"]["k"]}
 STUDY_OUTPUTS = expand("results/study/summary.{ext}", ext=["json", "pdf", "png"])
 
 
@@ -16,11 +17,12 @@ rule study_k:
     benchmark:
         "logs/benchmarks/study_k_{k}.tsv"
     wildcard_constraints:
-        k="|".join(re.escape(k) for k in STUDY_K),
+        k="|".join(re.escape(name) for name in STUDY_K),
     conda:
         "../envs/turntable.yaml"
     params:
         **{key: value for key, value in config["study"].items() if key != "k"},
+        k=lambda wildcards: STUDY_K[wildcards.k],
     script:
         "../../scripts/study_k.py"
 
@@ -28,7 +30,7 @@ rule study_k:
 rule study:
     input:
         **script_inputs("study_summary", STYLE),
-        results=expand("results/study/k_{k}.json", k=STUDY_K),
+        results=expand("results/study/k_{k}.json", k=list(STUDY_K)),
     output:
         json=ensure("results/study/summary.json", non_empty=True),
         pdf=ensure("results/study/summary.pdf", non_empty=True),

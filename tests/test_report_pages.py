@@ -104,6 +104,11 @@ def test_claims_page_has_one_row_per_claim_with_its_verdict() -> None:
             id="before-a-full-stop",
         ),
         pytest.param("turntable.beta, beta.x", "turntable.beta, beta.x", id="dotted-names"),
+        pytest.param(
+            "x_c e1 + y_c e2, not e12",
+            "x<sub>c</sub> e<sub>1</sub> + y<sub>c</sub> e<sub>2</sub>, not e12",
+            id="kernel",
+        ),
     ],
 )
 def test_claims_page_typesets_the_plain_text_mathematics(text: str, html: str) -> None:

@@ -273,9 +273,9 @@ _SYMBOLS = {
 }  # fmt: skip
 #: One token of the registry's plain-text mathematics (the same forms as the article's
 #: ascii-math rule in paper/values.typ): exp(2 pi), 6.9e-25, ^-2 and ^(3/2), x0, u0 and mu0*,
-#: alpha1, sigma_g, lambda_{1,2} and lambda_+, vx and wy, the angular velocity w (with an index or a
-#: subscript: w1, w_h), the cross product "gamma x", z+ and z-, sqrt, the symbols, and a
-#: minus between spaces.
+#: alpha1, sigma_g, lambda_{1,2} and lambda_+, vx and wy, x_c and e1, the angular velocity w
+#: (with an index or a subscript: w1, w_h), the cross product "gamma x", z+ and z-, sqrt, the
+#: symbols, and a minus between spaces.
 _MATH_TOKEN = re.compile(
     r"exp\(2 pi\)"
     r"|\bgamma x\b"
@@ -284,6 +284,7 @@ _MATH_TOKEN = re.compile(
     r"|(?<![\w.])(?:" + "|".join(sorted(_GREEK, key=len, reverse=True)) + r")\d*"
     r"(?:_(?:c|g|h|dim)\b|_\{[^}]*\}|_[+-])?\*?(?!\w|\.\w)"
     r"|(?<![\w.])[xyzru]0\*?(?!\w|\.\w)"
+    r"|(?<![\w.])[xy]_c(?!\w|\.\w)|(?<![\w.])e[12](?!\w|\.\w)"
     r"|(?<![\w.])[vw][xyz](?!\w|\.\w)"
     r"|(?<![\w.])w(?:\d+|_(?:c|g|h)\b|_\{[^}]*\})?(?!\w|\.\w)"
     r"|(?<![\w.])z[+-](?=[\s,.;:)|]|$)"

@@ -85,8 +85,8 @@ $(DOCS_STAMP): $(BUILD_STAMP)
 test: $(STAMP)
 	$(BIN)/python -m pytest -n 2
 
-# The tests marked slow (a dry run of the whole workflow, a Jupyter kernel, or a video of a
-# phone's camera each): run by CI.
+# The tests marked slow (a dry run of the whole workflow, a Jupyter kernel, a video of a
+# phone's camera each, or the wheel installed in a fresh venv): run by CI.
 test-slow: $(STAMP)
 	$(BIN)/python -m pytest -n 2 -m slow
 

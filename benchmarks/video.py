@@ -432,7 +432,7 @@ def run(
             "coverage_2se": 0.9,
             "largest_abs_z": WRONG_Z,
             "confident_wrong": 0,
-            "track_seconds_2400_frames": 20.0,
+            "track_seconds_2400_frames": 10.0,
         },
         "within_guide": summary(within),
         "outside_guide": summary([r for r in rows if not r["within_guide"]]),

@@ -118,6 +118,7 @@ def light(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return venv / "bin"
 
 
+@pytest.mark.slow
 def test_the_wheel_in_a_fresh_venv_solves_and_plots_without_the_extras(
     light: Path, tmp_path: Path
 ) -> None:
@@ -151,6 +152,7 @@ print(out["selected"], *sys.modules)
     assert installed & {"sympy", "mpmath", "jsonschema", "pyyaml", "tqdm", "shtab"} == set()
 
 
+@pytest.mark.slow
 def test_the_light_install_s_command_line(light: Path, tmp_path: Path) -> None:
     """The console script of the wheel: --version, a fit, and one line naming the extra
     where ``turntable claims`` needs one."""

@@ -4,7 +4,9 @@ the times of the container (PyAV); ``lab`` turns a window of a picture into CIEL
 from __future__ import annotations
 
 import os
-from collections.abc import Iterator
+import queue
+import threading
+from collections.abc import Iterable, Iterator
 from fractions import Fraction
 from pathlib import Path
 from typing import Any, NamedTuple
@@ -16,6 +18,8 @@ from turntable._atomic import replacing
 
 #: Word of a video's metadata (or file name) that marks it as rendered, not filmed.
 SYNTHETIC = "SYNTHETIC"
+#: Frames decoded ahead of the one the caller holds (a 720p frame is 1.4 MB).
+AHEAD = 8
 
 
 class VideoError(ValueError):
@@ -93,6 +97,7 @@ class Video:
         stream = self._container.streams.video[0]
         stream.thread_type = "AUTO"
         self._stream = stream
+        self._ahead: _Ahead | None = None
         rate = float(stream.average_rate or stream.guessed_rate or 0.0)
         self.info = VideoInfo(
             name,
@@ -105,24 +110,36 @@ class Video:
         )
 
     def frames(self) -> Iterator[tuple[int, float, Picture]]:
-        """Yield (index, time in s from the container's timestamps, picture)."""
+        """Yield (index, time in s from the container's timestamps, picture).
+
+        The frames are decoded in a thread of their own, up to `AHEAD` ahead of the caller
+        (PyAV lets other threads run while FFmpeg decodes): what the caller does with a frame
+        and the decoding of the next ones take their turns on different cores."""
         av = _import_av()
         name = self.info.path
+        self._ahead = _Ahead(
+            ((frame.time, _picture(frame)) for frame in self._container.decode(self._stream)),
+            AHEAD,
+        )
         index = -1
         try:
-            for frame in self._container.decode(self._stream):
+            for frame_time, picture in self._ahead:
                 index += 1
-                if frame.time is not None:
-                    time = float(frame.time)
+                if frame_time is not None:
+                    time = float(frame_time)
                 elif self.info.rate > 0:
                     time = index / self.info.rate
                 else:
                     raise VideoError(f"{name}: frame {index} has no timestamp and no frame rate")
-                yield index, time, _picture(frame)
+                yield index, time, picture
         except av.error.FFmpegError as exc:
             raise VideoError(f"{name}: cannot decode frame {index + 1} ({exc})") from None
+        finally:
+            self._ahead.stop()
 
     def close(self) -> None:
+        if self._ahead is not None:
+            self._ahead.stop()  # before the container it decodes is closed
         self._container.close()
 
     def __enter__(self) -> Video:
@@ -130,6 +147,51 @@ class Video:
 
     def __exit__(self, *exc: object) -> None:
         self.close()
+
+
+class _Ahead:
+    """The items of `items`, taken in a thread of its own up to `size` ahead of the caller; an
+    exception raised there is raised again where the caller iterates."""
+
+    def __init__(self, items: Iterable[Any], size: int) -> None:
+        self._queue: queue.Queue[tuple[bool, Any]] = queue.Queue(size)
+        self._stopped = threading.Event()
+        self._thread = threading.Thread(target=self._take, args=(items,), daemon=True)
+        self._thread.start()
+
+    def _take(self, items: Iterable[Any]) -> None:
+        try:
+            for item in items:
+                if not self._put((True, item)):
+                    return
+        except BaseException as exc:  # raised again in the caller's thread
+            self._put((False, exc))
+        else:
+            self._put((False, None))
+
+    def _put(self, entry: tuple[bool, Any]) -> bool:
+        while not self._stopped.is_set():
+            try:
+                self._queue.put(entry, timeout=0.05)
+                return True
+            except queue.Full:
+                pass
+        return False
+
+    def __iter__(self) -> Iterator[Any]:
+        while True:
+            taken, item = self._queue.get()
+            if taken:
+                yield item
+            elif item is None:
+                return
+            else:
+                raise item
+
+    def stop(self) -> None:
+        """Stop taking items (the thread ends within 0.05 s of its current item)."""
+        self._stopped.set()
+        self._thread.join()
 
 
 def _picture(frame: Any) -> Picture:

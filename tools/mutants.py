@@ -372,12 +372,12 @@ MUTANTS = [
     Mutant(
         "rolling-amplitude-sign",
         "A_g = (v0 + lambda_c r0) / (lambda_g - lambda_c) instead of v0 - lambda_c r0 (rolling)",
-        (("rolling.py", "(v0 - lc * r0) / d", "(v0 + lc * r0) / d", 1),),
+        (("_rolling_solution.py", "(v0 - lc * r0) / d", "(v0 + lc * r0) / d", 1),),
     ),
     Mutant(
         "rolling-constraint-sign",
         "w = r - i v instead of w = r + i v in the rolling solution",
-        (("rolling.py", "w = amp + 1j * v", "w = amp - 1j * v", 1),),
+        (("_rolling_solution.py", "w = amp + 1j * v", "w = amp - 1j * v", 1),),
     ),
     Mutant(
         "rolling-torque-sign",

@@ -96,7 +96,7 @@ MUTANTS = [
         "y0 = wy - vx/k instead of wy + vx/k, wherever the centre is computed",
         (
             (
-                "solution.py",
+                "_conserved.py",
                 "(k * z0[..., 5] + z0[..., 2]) / k",
                 "(k * z0[..., 5] - z0[..., 2]) / k",
                 1,
@@ -105,7 +105,13 @@ MUTANTS = [
                 "solution.py",
                 "rc = w0 + 1j * v0 / k",
                 "rc = w0 + 1j * complex(-v0.real, v0.imag) / k",
-                2,
+                1,
+            ),
+            (
+                "_no_slip.py",
+                "rc = w0 + 1j * v0 / k",
+                "rc = w0 + 1j * complex(-v0.real, v0.imag) / k",
+                1,
             ),
         ),
     ),
@@ -134,7 +140,7 @@ MUTANTS = [
     Mutant(
         "no-slip-rate",
         "the no-slip orbit turns at k/(k+2) instead of k/(k+1) (nonholonomic)",
-        (("solution.py", "omega = k / (k + 1.0)", "omega = k / (k + 2.0)", 1),),
+        (("_no_slip.py", "omega = k / (k + 1.0)", "omega = k / (k + 2.0)", 1),),
     ),
     Mutant(
         "spin-from-velocity",
@@ -158,7 +164,7 @@ MUTANTS = [
         "slip_velocity with the opposite sign of gamma x (.): u = v - gamma x w + gamma x r",
         (
             (
-                "solution.py",
+                "_no_slip.py",
                 "z[..., 2] - z[..., 5] + z[..., 1], z[..., 3] + z[..., 4] - z[..., 0]",
                 "z[..., 2] + z[..., 5] - z[..., 1], z[..., 3] - z[..., 4] + z[..., 0]",
                 1,

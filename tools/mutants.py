@@ -613,7 +613,7 @@ MUTANTS = [
     Mutant(
         "fit-expected-aic",
         "expected AIC difference without the penalty of the two extra parameters",
-        (("fit/design.py", "d = 2.0 * q + 2.0 * k_s", "d = q + 2.0 * k_s", 1),),
+        (("fit/_predict.py", "d = 2.0 * q + 2.0 * k_s", "d = q + 2.0 * k_s", 1),),
         FIT_TESTS,
     ),
     Mutant(

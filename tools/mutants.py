@@ -96,7 +96,7 @@ MUTANTS = [
         "y0 = wy - vx/k instead of wy + vx/k, wherever the centre is computed",
         (
             (
-                "solution.py",
+                "_conserved.py",
                 "(k * z0[..., 5] + z0[..., 2]) / k",
                 "(k * z0[..., 5] - z0[..., 2]) / k",
                 1,
@@ -105,7 +105,13 @@ MUTANTS = [
                 "solution.py",
                 "rc = w0 + 1j * v0 / k",
                 "rc = w0 + 1j * complex(-v0.real, v0.imag) / k",
-                2,
+                1,
+            ),
+            (
+                "_no_slip.py",
+                "rc = w0 + 1j * v0 / k",
+                "rc = w0 + 1j * complex(-v0.real, v0.imag) / k",
+                1,
             ),
         ),
     ),
@@ -134,7 +140,7 @@ MUTANTS = [
     Mutant(
         "no-slip-rate",
         "the no-slip orbit turns at k/(k+2) instead of k/(k+1) (nonholonomic)",
-        (("solution.py", "omega = k / (k + 1.0)", "omega = k / (k + 2.0)", 1),),
+        (("_no_slip.py", "omega = k / (k + 1.0)", "omega = k / (k + 2.0)", 1),),
     ),
     Mutant(
         "spin-from-velocity",
@@ -158,7 +164,7 @@ MUTANTS = [
         "slip_velocity with the opposite sign of gamma x (.): u = v - gamma x w + gamma x r",
         (
             (
-                "solution.py",
+                "_no_slip.py",
                 "z[..., 2] - z[..., 5] + z[..., 1], z[..., 3] + z[..., 4] - z[..., 0]",
                 "z[..., 2] + z[..., 5] - z[..., 1], z[..., 3] - z[..., 4] + z[..., 0]",
                 1,
@@ -372,12 +378,12 @@ MUTANTS = [
     Mutant(
         "rolling-amplitude-sign",
         "A_g = (v0 + lambda_c r0) / (lambda_g - lambda_c) instead of v0 - lambda_c r0 (rolling)",
-        (("rolling.py", "(v0 - lc * r0) / d", "(v0 + lc * r0) / d", 1),),
+        (("_rolling_solution.py", "(v0 - lc * r0) / d", "(v0 + lc * r0) / d", 1),),
     ),
     Mutant(
         "rolling-constraint-sign",
         "w = r - i v instead of w = r + i v in the rolling solution",
-        (("rolling.py", "w = amp + 1j * v", "w = amp - 1j * v", 1),),
+        (("_rolling_solution.py", "w = amp + 1j * v", "w = amp - 1j * v", 1),),
     ),
     Mutant(
         "rolling-torque-sign",
@@ -607,7 +613,7 @@ MUTANTS = [
     Mutant(
         "fit-expected-aic",
         "expected AIC difference without the penalty of the two extra parameters",
-        (("fit/design.py", "d = 2.0 * q + 2.0 * k_s", "d = q + 2.0 * k_s", 1),),
+        (("fit/_predict.py", "d = 2.0 * q + 2.0 * k_s", "d = q + 2.0 * k_s", 1),),
         FIT_TESTS,
     ),
     Mutant(

@@ -106,6 +106,26 @@ def test_a_ball_merged_with_its_hard_shadow_is_centred_by_the_arc_bordering_the_
     assert np.hypot(*(got - (40.3, 38.7))) < 0.05
 
 
+def test_a_blob_of_a_ball_and_its_hard_shadow_has_the_ball_s_centre_and_area() -> None:
+    """The blob of a black ball and its hard shadow on a light platter, read back as a 4:2:0
+    frame: its centre is the ball's within 0.2 px and its area, which ``ball_size`` checks,
+    the ball's within 15 % (the whole blob's is twice it: the ball was refused as 54 px
+    across for 38)."""
+    from turntable.video.decode import Picture, lab, yuv420
+
+    share = _hard_shadow(0.85, 40.0)
+    black, grey = np.array([10.0, 10.0, 12.0]), np.array([150.0, 150.0, 155.0])
+    img = np.clip(grey + share[..., None] * (black - grey) + 0.5, 0, 255).astype(np.uint8)
+    frame = yuv420(img)
+    y, cb, cr = frame[:80], frame[80:100], frame[100:]
+    picture = Picture(y, cb.reshape(40, 40), cr.reshape(40, 40), False)
+    colour = blobs.Colour(lab(picture)[38, 40].astype(float), lab(picture)[2, 2].astype(float))
+    box = (slice(0, 80), slice(0, 80))
+    (got,) = blobs.blobs(picture, box, colour, np.ones((80, 80), bool), outline=12.0)
+    assert np.hypot(got.u - 40.3, got.v - 38.7) < 0.2
+    assert abs(got.area / (math.pi * 12.0**2) - 1) < 0.15
+
+
 @pytest.mark.parametrize("elevation", [40.0, 50.0])
 def test_a_shadow_as_dark_as_the_ball_is_not_told_from_it(elevation) -> None:
     """The same shadow as dark as the ball: no edge between them, so no arc is taken (the

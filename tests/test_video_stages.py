@@ -73,6 +73,70 @@ def test_the_outline_finds_the_centre_past_a_shadow_and_a_dim_limb(shadow, limb)
         assert np.hypot(u.mean() - 40.3, v.mean() - 38.7) > 0.4
 
 
+def _hard_shadow(shadow: float, elevation_deg: float, centre=(40.3, 38.7), radius=12.0):
+    """A share image: a ball of share 1 and its hard shadow of share ``shadow`` cast by a
+    light ``elevation_deg`` high, seen from above: an ellipse of semi-axes R / sin(elevation)
+    and R, centred R / tan(elevation) from the ball's centre, merged with the ball's blob."""
+    n = 8
+    v, u = np.mgrid[0 : 80 * n, 0 : 80 * n] / n + (0.5 / n - 0.5)
+    e, d = math.radians(elevation_deg), np.array([-1.0, 1.0]) / math.sqrt(2)
+    c = np.array(centre) + d * radius / math.tan(e)
+    along, across = (u - c[0]) * d[0] + (v - c[1]) * d[1], (v - c[1]) * d[0] - (u - c[0]) * d[1]
+    cast = (along * math.sin(e) / radius) ** 2 + (across / radius) ** 2 < 1
+    ball = np.hypot(u - centre[0], v - centre[1]) < radius
+    share = np.where(ball, 1.0, np.where(cast, shadow, 0.0))
+    return share.reshape(80, n, 80, n).mean(axis=(1, 3)).astype(np.float32)
+
+
+@pytest.mark.parametrize("elevation", [40.0, 50.0])
+def test_a_ball_merged_with_its_hard_shadow_is_centred_by_the_arc_bordering_the_platter(
+    elevation,
+) -> None:
+    """A black ball on a light platter under a hard light (MuJoCo, unseen.py's
+    ``black_ball_hard_shadow``): its shadow, nearly as dark, merges into its blob, whose
+    centroid lies 6-10 px (0.5-0.8 R) into the shadow.  The circle of the ball's radius
+    through the arc that borders the platter, the share falling outward across it all round
+    (into the lighter shadow too), is the ball's within 0.05 px; before, the outline's points
+    on the shadow's far edge left the centroid."""
+    share = _hard_shadow(0.85, elevation)
+    v, u = np.nonzero(share > blobs.THRESHOLD)
+    start = np.array([u.mean(), v.mean()])
+    assert np.hypot(*(start - (40.3, 38.7))) > 6.0
+    got = blobs.outline_centre(share, start, 12.0, start)
+    assert np.hypot(*(got - (40.3, 38.7))) < 0.05
+
+
+def test_a_blob_of_a_ball_and_its_hard_shadow_has_the_ball_s_centre_and_area() -> None:
+    """The blob of a black ball and its hard shadow on a light platter, read back as a 4:2:0
+    frame: its centre is the ball's within 0.2 px and its area, which ``ball_size`` checks,
+    the ball's within 15 % (the whole blob's is twice it: the ball was refused as 54 px
+    across for 38)."""
+    from turntable.video.decode import Picture, lab, yuv420
+
+    share = _hard_shadow(0.85, 40.0)
+    black, grey = np.array([10.0, 10.0, 12.0]), np.array([150.0, 150.0, 155.0])
+    img = np.clip(grey + share[..., None] * (black - grey) + 0.5, 0, 255).astype(np.uint8)
+    frame = yuv420(img)
+    y, cb, cr = frame[:80], frame[80:100], frame[100:]
+    picture = Picture(y, cb.reshape(40, 40), cr.reshape(40, 40), False)
+    colour = blobs.Colour(lab(picture)[38, 40].astype(float), lab(picture)[2, 2].astype(float))
+    box = (slice(0, 80), slice(0, 80))
+    (got,) = blobs.blobs(picture, box, colour, np.ones((80, 80), bool), outline=12.0)
+    assert np.hypot(got.u - 40.3, got.v - 38.7) < 0.2
+    assert abs(got.area / (math.pi * 12.0**2) - 1) < 0.15
+
+
+@pytest.mark.parametrize("elevation", [40.0, 50.0])
+def test_a_shadow_as_dark_as_the_ball_is_not_told_from_it(elevation) -> None:
+    """The same shadow as dark as the ball: no edge between them, so no arc is taken (the
+    circle about the shadow's far end fits as well): the centre falls back, and the blob's
+    size is left to the ``ball_size`` check."""
+    share = _hard_shadow(1.0, elevation)
+    v, u = np.nonzero(share > blobs.THRESHOLD)
+    start = np.array([u.mean(), v.mean()])
+    assert (blobs.outline_centre(share, start, 12.0, start) == start).all()
+
+
 @pytest.fixture(scope="module")
 def tracked(tmp_path_factory):
     """A tracked video, and the checks run on its data with changes."""

@@ -68,6 +68,27 @@ ROUND_AREA = (0.4, 2.5)
 #: A ball in a blob of a like colour (`merged_ball`): found by this many outline points at
 #: least (half of the rays), within this share of the radius of where it is predicted.
 MERGED_POINTS, MERGED_REACH = 24, 0.25
+#: A ball whose hard shadow merges into its blob (a black ball on a light platter): the
+#: outline's points on the shadow's far edge pull the least-squares circle aside.  The circle
+#: of the ball's radius through the most of the outline's weight within ``ARC_PX`` px (tried
+#: through each pair of points at least ``ARC_CHORD`` radii apart: nearer pairs fix no centre)
+#: is taken instead where it carries ``ARC_GAIN`` times the weight the least-squares circle
+#: carries within ``ARC_PX`` and at least ``ARC_MIN`` of all the weight (the half of the
+#: outline that borders the platter): a ball of another size than the one predicted lies on
+#: no such arc, and is left to ``ball_size``.  The rays are cast again from the arc's centre
+#: (from the blob's centroid, pulled into the shadow, fewer of them reach the ball's free
+#: edge: there the arc need carry ``ARC_FIRST`` of the weight only).
+ARC_PX, ARC_CHORD, ARC_GAIN, ARC_MIN, ARC_FIRST = 1.0, 1.0, 1.25, 0.5, 0.3
+#: An arc's circle is the ball's only where the share falls outward across it, by at
+#: least ``ARC_STEP``, on ``ARC_EDGE`` of the rays (sampled ``ARC_ACROSS`` px either side):
+#: on the shadow's side too, from the ball into its lighter shadow.  About the far end of a
+#: shadow it rises into the ball, or stays level in the shadow; a shadow as dark as the ball
+#: shows no edge, and no check can tell them apart.
+ARC_STEP, ARC_EDGE, ARC_ACROSS = 0.05, 0.9, 1.5
+#: No arc is taken for an image of the ball smaller than this radius (px): there ``ARC_PX`` and
+#: ``ARC_ACROSS`` are so large a share of it that a ball of 1.5 times the radius given (a
+#: wrong --ball-radius) passed, and its track jumped; ``ball_size`` refuses it.
+ARC_MIN_PX = 8.0
 
 _KERNEL = np.ones((3, 3), np.uint8)
 
@@ -163,7 +184,9 @@ def blobs(
         centre = np.array([(wt * uu).sum(), (wt * vv).sum()]) / total
         if outline and ROUND_AREA[0] < total / (math.pi * outline**2) < ROUND_AREA[1]:
             edge = colour.edge_share(lab_img)
-            centre = outline_centre(edge, centre, outline, centre)
+            centre, arc = _outline(edge, centre, outline, centre)
+            if arc:  # its shadow left out: the blob's weight within the ball's circle
+                total = float(wt[np.hypot(uu - centre[0], vv - centre[1]) < outline + ARC_PX].sum())
         cut = x == 0 or y == 0 or x + w >= mask.shape[1] or y + h >= mask.shape[0]
         out.append(Blob(float(centre[0]) + u0, float(centre[1]) + v0, total, touches, cut))
     return out
@@ -213,10 +236,30 @@ def outline_centre(
        squares, outliers (`EDGE_OFF`, `EDGE_SPREADS`) left out and taken back if the circle
        moves to them (`_fit_outline`).
 
-    A shadow beside the ball begins with a second fall, which is never reached.  Falls back
+    A shadow beside the ball begins with a second fall, which is never reached.  A hard
+    shadow as dark as the ball is taken into its outline: then the circle through the arc
+    that borders the platter (`_arc`), the rays cast again from its centre.  Falls back
     to ``fallback`` with fewer than ``min_points`` points, or fewer than half as many kept
     with weight.
     """
+    return _outline(share, start, radius, fallback, rays, min_points)[0]
+
+
+def _outline(share, start, radius: float, fallback, rays: int = 48, min_points: int = 12):
+    """`outline_centre`, and whether the centre is that of the arc bordering the platter."""
+    arc_min = ARC_FIRST if radius >= ARC_MIN_PX else math.inf
+    got = _outline_fit(share, start, radius, fallback, rays, min_points, arc_min)
+    if got is None or not got[1]:
+        return (None, False) if got is None else got
+    got = _outline_fit(share, got[0], radius, None, rays, min_points, ARC_MIN)
+    if got is None or not _edge_all_round(share, got[0], radius, rays):
+        return fallback, False
+    return got[0], True
+
+
+def _outline_fit(share, start, radius: float, fallback, rays: int, min_points: int, arc_min):
+    """`outline_centre`'s four steps from ``start``: the centre, and whether it is an arc's
+    (None if it falls back to None)."""
     # 1. the share along each ray, and its fall per px
     r, a, prof = _profiles(share, start, radius, rays)
     fall = (prof[:, :-2] - prof[:, 2:]) / (2 * RAY_STEP)  # centred, at samples 1 .. n-2
@@ -228,11 +271,11 @@ def outline_centre(
         if got is not None:
             found.append((k, *got))
     if len(found) < min_points:
-        return fallback
+        return None if fallback is None else (fallback, False)
     # 3. where each crosses half-way, and its weight
     pts, weight = _outline_points(np.array(found).T, r, a, prof, fall, start)
     # 4. the circle through them
-    return _fit_outline(pts, weight, start, radius, fallback, min_points)
+    return _fit_outline(pts, weight, start, radius, fallback, min_points, arc_min)
 
 
 def _profiles(share, start, radius: float, rays: int):
@@ -298,10 +341,61 @@ def _outline_points(found, r, a, prof, fall, start):
     return pts[weight > 0], weight[weight > 0]
 
 
-def _fit_outline(pts, weight, start, radius: float, fallback, min_points: int):
+def _fit_outline(pts, weight, start, radius: float, fallback, min_points: int, arc_min):
     """The centre of the circle of radius ``radius`` nearest the weighted points, refitted
-    without the outliers until they stay the same (at most `EDGE_ROUNDS` fits)."""
-    keep = np.ones(len(pts), bool)
+    without the outliers until they stay the same (at most `EDGE_ROUNDS` fits); from the arc
+    that carries the most weight (`_arc`) where that is a clearly better circle and carries
+    ``arc_min`` of the weight.  With whether it is the arc's; None if it falls back to None."""
+    centre = _refit(pts, weight, start, np.ones(len(pts), bool), radius, fallback, min_points)
+    arc, on_arc = _arc(pts, weight, radius)
+    plain = None if centre is None else (centre, False)
+    if arc is None or (weight * on_arc).sum() < arc_min * weight.sum():
+        return plain
+    if centre is not None and (weight * on_arc).sum() < ARC_GAIN * _support(
+        pts, weight, centre, radius
+    ):
+        return plain
+    centre = _refit(pts, weight, arc, on_arc, radius, None, min_points)
+    return plain if centre is None else (centre, True)
+
+
+def _edge_all_round(share, centre, radius: float, rays: int) -> bool:
+    """Whether the share falls outward across the circle on `ARC_EDGE` of the rays."""
+    a = np.linspace(0.0, 2 * math.pi, rays, endpoint=False)
+    r = radius + np.array([-ARC_ACROSS, ARC_ACROSS])
+    pu = (centre[0] + np.cos(a)[:, None] * r).astype(np.float32)
+    pv = (centre[1] + np.sin(a)[:, None] * r).astype(np.float32)
+    prof = cv2.remap(share, pu, pv, cv2.INTER_LINEAR, borderMode=cv2.BORDER_REPLICATE)
+    return float(np.mean(prof[:, 0] - prof[:, 1] >= ARC_STEP)) >= ARC_EDGE
+
+
+def _support(pts, weight, centre, radius: float) -> float:
+    """The weight of the points within `ARC_PX` of the circle."""
+    return float((weight * (np.abs(np.hypot(*(pts - centre).T) - radius) < ARC_PX)).sum())
+
+
+def _arc(pts, weight, radius: float):
+    """The centre of the circle of radius ``radius`` through the most weight within `ARC_PX`,
+    of those through two points at least `ARC_CHORD` radii apart, and which points lie on it;
+    (None, None) if no pair is."""
+    i, j = np.triu_indices(len(pts), 1)
+    chord = pts[j] - pts[i]
+    half = 0.5 * np.hypot(*chord.T)
+    ok = (half >= 0.5 * ARC_CHORD * radius) & (half < radius)
+    if not ok.any():
+        return None, None
+    mid, chord, half = 0.5 * (pts[i] + pts[j])[ok], chord[ok], half[ok]
+    normal = np.c_[-chord[:, 1], chord[:, 0]] / (2 * half[:, None])
+    h = np.sqrt(radius**2 - half**2)[:, None]
+    centres = np.vstack([mid + h * normal, mid - h * normal])
+    dist = np.hypot(pts[None, :, 0] - centres[:, :1], pts[None, :, 1] - centres[:, 1:])
+    on = np.abs(dist - radius) < ARC_PX
+    best = int(np.argmax(on @ weight))
+    return centres[best], on[best]
+
+
+def _refit(pts, weight, start, keep, radius: float, fallback, min_points: int):
+    """`_fit_outline`'s rounds from ``start``, the points ``keep`` kept first."""
     centre = np.asarray(start, float)
     for _ in range(EDGE_ROUNDS):
         if 2 * keep.sum() < min_points:

@@ -347,13 +347,15 @@ def _fit_outline(pts, weight, start, radius: float, fallback, min_points: int, a
     that carries the most weight (`_arc`) where that is a clearly better circle and carries
     ``arc_min`` of the weight.  With whether it is the arc's; None if it falls back to None."""
     centre = _refit(pts, weight, start, np.ones(len(pts), bool), radius, fallback, min_points)
-    arc, on_arc = _arc(pts, weight, radius)
     plain = None if centre is None else (centre, False)
+    support = 0.0 if centre is None else _support(pts, weight, centre, radius)
+    # no arc carries more than all the weight: the search is skipped where that cannot win
+    if arc_min > 1.0 or weight.sum() < ARC_GAIN * support:
+        return plain
+    arc, on_arc = _arc(pts, weight, radius)
     if arc is None or (weight * on_arc).sum() < arc_min * weight.sum():
         return plain
-    if centre is not None and (weight * on_arc).sum() < ARC_GAIN * _support(
-        pts, weight, centre, radius
-    ):
+    if (weight * on_arc).sum() < ARC_GAIN * support:
         return plain
     centre = _refit(pts, weight, arc, on_arc, radius, None, min_points)
     return plain if centre is None else (centre, True)

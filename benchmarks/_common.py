@@ -27,8 +27,8 @@ import scipy
 from numpy.typing import NDArray
 
 import turntable as tt
-from blas_threads import BLAS_THREAD_VARIABLES
 from results_file import merge_results
+from turntable._blas import BLAS_THREAD_VARIABLES
 
 ROOT = Path(__file__).resolve().parents[1]
 

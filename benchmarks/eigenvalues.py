@@ -25,8 +25,8 @@ import numpy as np
 import _common
 import turntable as tt
 from _common import fmt, num, pf
-from blas_threads import one_blas_thread
 from turntable import reference
+from turntable._blas import one_blas_thread
 
 NAME = "eigenvalues"
 

@@ -74,8 +74,8 @@ import numpy as np
 import _common
 import turntable as tt
 from _common import best_time
-from blas_threads import one_blas_thread
 from turntable import film, fit
+from turntable._blas import one_blas_thread
 from turntable.config import validate
 
 NAME = "fit"

@@ -34,7 +34,7 @@ import eigenvalues
 import fit
 import solution
 import speed
-from blas_threads import one_blas_thread
+from turntable._blas import one_blas_thread
 
 #: The topics, in the order they run.
 TOPICS = (eigenvalues, solution, speed, fit)

@@ -26,8 +26,8 @@ from numpy.typing import NDArray
 import _common
 import turntable as tt
 from _common import ERROR_MEASURE, INITIAL_STATES, K_BALL, best_time, fmt, mp_error, num, pf
-from blas_threads import one_blas_thread
 from turntable import reference
+from turntable._blas import one_blas_thread
 
 NAME = "speed"
 

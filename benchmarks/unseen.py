@@ -37,8 +37,8 @@ from typing import Any
 
 import numpy as np
 
-from blas_threads import one_blas_thread
 from results_file import ROOT, merge_results
+from turntable._blas import one_blas_thread
 from video import COLOURS, GREYS, draw, measure, reliable_level, render, rgba
 
 #: Thresholds of a confident wrong answer: positions (rms, ball radii), Omega (relative).

@@ -48,9 +48,9 @@ from typing import Any
 import numpy as np
 
 import turntable as tt
-from blas_threads import one_blas_thread
 from results_file import ROOT, merge_results
 from turntable import film, fit
+from turntable._blas import one_blas_thread
 from turntable.config import validate
 from turntable.video.decode import VideoError
 from turntable.video.render import Scene, render_video

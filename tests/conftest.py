@@ -79,8 +79,9 @@ def computed(
 
 
 # The shared build ------------------------------------------------------------------------
-# It takes a fifth of the suite's time: it starts with the session, in the background of
-# one worker, and the tests that read it run last, so that no worker waits for it idle.
+# A minute of CPU (32 jobs): a test that reads it is marked slow (run by make test-slow and
+# CI). It starts with the session, in the background of one worker, and the tests that read
+# it run last, so that no worker waits for it idle.
 
 BUILD_FIXTURES = {"clean_build", "build_record"}
 
@@ -89,7 +90,11 @@ def _reads_build(item: pytest.Item) -> bool:
     return bool(BUILD_FIXTURES & set(getattr(item, "fixturenames", ())))
 
 
+@pytest.hookimpl(tryfirst=True)  # before -m selects by the marks
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+    for item in items:
+        if _reads_build(item):
+            item.add_marker(pytest.mark.slow)
     items.sort(key=_reads_build)
 
 

@@ -114,7 +114,7 @@ def test_one_blas_thread_after_numpy_is_imported(keep: bool, threads: int) -> No
         "import os, sys, numpy\n"
         "from threadpoolctl import threadpool_info\n"
         f"sys.path.insert(0, {str(BENCHMARKS)!r})\n"
-        "from blas_threads import one_blas_thread\n"
+        "from turntable._blas import one_blas_thread\n"
         f"if not {keep}: del os.environ['OPENBLAS_NUM_THREADS']\n"
         "one_blas_thread()\n"
         "print(*{i['num_threads'] for i in threadpool_info() if i['user_api'] == 'blas'})\n"

@@ -48,12 +48,14 @@ def z() -> np.ndarray:
     return z_scores()
 
 
+@pytest.mark.slow  # the fits of N_FILMS films: CI runs it
 def test_spread_of_z_scores_is_one(z: np.ndarray) -> None:
     """The reported standard error is the spread of the fitted coefficients."""
     spread = float(z.std(ddof=1))
     assert abs(spread - 1.0) < SPREAD_TOLERANCE, spread
 
 
+@pytest.mark.slow  # the fits of N_FILMS films: CI runs it
 def test_z_scores_are_centred_and_cover(z: np.ndarray) -> None:
     """Mean 0 +- 3 / sqrt(N); within 2 SE in 95.45 % +- 3 sd of a binomial share."""
     assert abs(z.mean()) < 3 / math.sqrt(N_FILMS), z.mean()

@@ -127,6 +127,7 @@ def test_noiseless_film_gives_back_the_truth(truths: list[Truth]) -> None:
         assert other.rms_residual > 1e3 * f.rms_residual
 
 
+@pytest.mark.slow  # the coverage campaign (N_TRUTHS x N_SEEDS films): CI runs it
 def test_coverage_of_two_standard_errors(truths: list[Truth], fits: list) -> None:
     z = np.array(
         [
@@ -143,6 +144,7 @@ def test_coverage_of_two_standard_errors(truths: list[Truth], fits: list) -> Non
     assert abs(z.std(ddof=1) - 1.0) < 3 / math.sqrt(2 * N_FILMS), z.std(ddof=1)
 
 
+@pytest.mark.slow  # the coverage campaign (N_TRUTHS x N_SEEDS films): CI runs it
 def test_predicted_stderr_is_the_scatter_of_the_fits(truths: list[Truth], fits: list) -> None:
     """The Cramer-Rao prediction (no data used) equals the scatter over seeds and the
     standard error each fit reports."""
@@ -163,6 +165,7 @@ def test_predicted_stderr_is_the_scatter_of_the_fits(truths: list[Truth], fits: 
 N_SELECTION = 15
 
 
+@pytest.mark.slow  # the coverage campaign (N_TRUTHS x N_SEEDS films): CI runs it
 def test_the_model_of_the_data_is_selected(truths: list[Truth], fits: list) -> None:
     """On films of 2.5 to 5 turns, AICc prefers the model the film was made with, every
     time (15 seeds of each of the 4 truths); for the slipping truths `distinguishability`
@@ -177,6 +180,7 @@ def test_the_model_of_the_data_is_selected(truths: list[Truth], fits: list) -> N
             assert own.aicc < alternative.aicc, (tr.model, seed)
 
 
+@pytest.mark.slow  # 120 films, both models fitted to each: CI runs it
 @pytest.mark.parametrize(
     ("mu0", "regime"),
     [(2.5, (3.0, 10.0)), (1.0, (80.0, 200.0))],
@@ -546,6 +550,7 @@ def test_wrong_omega_is_detected_and_fit_omega_recovers(model: str) -> None:
     assert fit.problems(right, data, true, fit.consistency(data, true, right)) == []
 
 
+@pytest.mark.slow  # a coverage campaign: CI runs it
 @pytest.mark.parametrize("model", fit.MODELS)
 def test_correlated_noise_gets_wider_standard_errors_that_cover(model: str) -> None:
     """Noise correlated from frame to frame (AR(1), lag-1 correlation 0.6, as a tracker's
@@ -581,6 +586,7 @@ def test_drift_kernel_is_the_dense_matrix_product(n: int, a: float) -> None:
     assert_allclose(_kernel_times(v, a), np.einsum("ij,jkl->ikl", dense, v), rtol=0, atol=1e-12)
 
 
+@pytest.mark.slow  # a coverage campaign: CI runs it
 @pytest.mark.parametrize("model", fit.MODELS)
 def test_slowly_drifting_errors_get_standard_errors_that_cover(model: str) -> None:
     """White noise plus errors that drift as a tracker's do (exponentially correlated over

@@ -102,6 +102,14 @@ def rates(mu0: float, k: float) -> tuple[float, float, float]:
     return r[0].real, r[-1].real, abs(r[0].imag)
 
 
+def rates_double(mu0: float, k: float) -> tuple[float, float, float]:
+    """`rates` from numpy's eigenvalues of L (the two of least modulus are its double zero):
+    to 1e-12 where mu0 is of order one, fast enough for a search over mu0."""
+    ev = np.linalg.eigvals(big(mu0, k))
+    r = sorted(ev[np.argsort(np.abs(ev))[2:]], key=lambda e: -e.real)
+    return r[0].real, r[-1].real, abs(r[0].imag)
+
+
 def random_states(p: dict[str, Any]) -> np.ndarray:
     """The draw the article states: uniform on [-1, 1], |vx| moved to [0.25, 1]."""
     z = np.random.default_rng(p["seed"]).uniform(-1.0, 1.0, size=(p["n_states"], 6))
@@ -555,15 +563,15 @@ def _rolling_rates(delta: float, k: float) -> tuple[float, float]:
     return g.real, abs(g.imag)
 
 
-def _equal_power_delta(mu0: float, k: float) -> float:
+def _equal_power_delta(mu0: float, k: float, rates: Callable = rates) -> float:
     a1, _, b = rates(mu0, k)
     lam = complex(a1, b)
     return mu0 * abs((k + 1) * lam - 1j * k) ** 2 / (k**2 * abs(1 + 1j * lam) ** 2)
 
 
-def _ratio(mu0: float, k: float, basis: str, measure: str) -> float:
+def _ratio(mu0: float, k: float, basis: str, measure: str, rates: Callable = rates) -> float:
     a1, _, b = rates(mu0, k)
-    delta = _equal_power_delta(mu0, k) if basis == "equal_power" else mu0
+    delta = _equal_power_delta(mu0, k, rates) if basis == "equal_power" else mu0
     sg, ng = _rolling_rates(delta, k)
     return a1 / b / (sg / ng) if measure == "per_turn" else a1 / sg
 
@@ -608,7 +616,7 @@ for _m in ("per_turn", "per_time"):
 def _crossover(basis: str, measure: str, level: float) -> Callable:
     def fn(q: dict[str, Any], p: dict[str, Any]) -> float:
         k = q["at"]["k"]
-        f = lambda x: _ratio(10.0**x, k, basis, measure) - level  # noqa: E731
+        f = lambda x: _ratio(10.0**x, k, basis, measure, rates_double) - level  # noqa: E731
         xs = np.linspace(-4, 4, 33)
         signs = np.sign([f(x) for x in xs])
         i = int(np.nonzero(np.diff(signs))[0][0])

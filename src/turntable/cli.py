@@ -45,6 +45,7 @@ from typing import Any, NoReturn
 import numpy as np
 
 from turntable import tracker
+from turntable._blas import one_blas_thread
 from turntable._plot_check import check_plot
 from turntable._progress import Progress
 from turntable._terminal import bars, logged
@@ -319,6 +320,7 @@ def _completion(shell: str) -> str:
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the ``turntable`` console script; returns the exit status."""
+    one_blas_thread()
     args = parse_args(sys.argv[1:] if argv is None else list(argv))
     if args.print_completion:
         _write(_completion(args.print_completion).rstrip("\n"))

@@ -103,19 +103,24 @@ class Colour(NamedTuple):
         """The share, 0 where a colour lies farther than `OFF_LINE` times the step from the
         line between the platter's and the target's (a label of another hue, say)."""
         step = (self.target - self.platter).astype(np.float32)
+        step2 = float(step @ step)
         diff = lab_img - self.platter.astype(np.float32)
-        share = diff @ (step / float(step @ step))
-        off = np.linalg.norm(diff - share[..., None] * step, axis=-1)
-        share[off > OFF_LINE * float(np.linalg.norm(step))] = 0.0
+        along = diff @ step  # share * |step|^2
+        # off the line: |diff|^2 - along^2 / |step|^2 > (OFF_LINE |step|)^2
+        off2 = np.einsum("...i,...i->...", diff, diff) * step2 - along * along
+        share = along / np.float32(step2)
+        share[off2 > np.float32(OFF_LINE**2 * step2 * step2)] = 0.0
         return share
 
-    def edge_share(self, lab_img: NDArray[np.float32]) -> NDArray[np.float32]:
+    def edge_share(
+        self, lab_img: NDArray[np.float32], share: NDArray[np.float32] | None = None
+    ) -> NDArray[np.float32]:
         """The share in lightness alone where lightness makes at least half of the colours'
         distance, and `EDGE_LIGHTNESS` or more (the chroma of a 4:2:0 video has half the
-        resolution), else `share`."""
+        resolution), else `share` (that of ``lab_img``, if already computed)."""
         step = float(self.target[0] - self.platter[0])
         distance = float(np.linalg.norm(self.target - self.platter))
-        share = self.share(lab_img)
+        share = self.share(lab_img) if share is None else share
         if abs(step) < max(EDGE_LIGHTNESS, 0.5 * distance):
             return share
         lightness = (lab_img[..., 0] - np.float32(self.platter[0])) / np.float32(step)
@@ -183,7 +188,7 @@ def blobs(
         )
         centre = np.array([(wt * uu).sum(), (wt * vv).sum()]) / total
         if outline and ROUND_AREA[0] < total / (math.pi * outline**2) < ROUND_AREA[1]:
-            edge = colour.edge_share(lab_img)
+            edge = colour.edge_share(lab_img, share)
             centre, arc = _outline(edge, centre, outline, centre)
             if arc:  # its shadow left out: the blob's weight within the ball's circle
                 total = float(wt[np.hypot(uu - centre[0], vv - centre[1]) < outline + ARC_PX].sum())
@@ -204,9 +209,10 @@ def merged_ball(
     h, w = lab_img.shape[:2]
     if not (0 <= start[0] < w and 0 <= start[1] < h):
         return None
-    if colour.share(lab_img)[int(start[1]), int(start[0])] < THRESHOLD:
+    share = colour.share(lab_img)
+    if share[int(start[1]), int(start[0])] < THRESHOLD:
         return None
-    edge = colour.edge_share(lab_img)
+    edge = colour.edge_share(lab_img, share)
     centre = outline_centre(edge, start, radius, None, min_points=MERGED_POINTS)
     if centre is None or np.hypot(*(centre - start)) > MERGED_REACH * radius:
         return None

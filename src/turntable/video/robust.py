@@ -1,8 +1,9 @@
 """Fitting shared by the stages: which residuals are outliers, and the centre of a circle.
 
 A residual is an outlier when it lies more than a number of *spreads* from the others: the
-median absolute deviation, scaled to a normal distribution's standard deviation
-(`scipy.stats.median_abs_deviation` with ``scale="normal"``), plus a floor, the noise below
+median absolute deviation, scaled to a normal distribution's standard deviation (as
+`scipy.stats.median_abs_deviation` with ``scale="normal"``, without importing scipy.stats,
+a second of a command's start), plus a floor, the noise below
 which points of a perfect fit are never cut.  Each stage names its own number of spreads and
 floor, with its reason.
 """
@@ -10,9 +11,13 @@ floor, with its reason.
 from __future__ import annotations
 
 import math
+from statistics import NormalDist
 
 import numpy as np
 from numpy.typing import NDArray
+
+#: A normal distribution's standard deviation over its median absolute deviation, 1.4826.
+MAD_TO_SD = 1 / NormalDist().inv_cdf(0.75)
 
 
 def spread(dev: NDArray[np.float64], floor: float) -> float:
@@ -36,9 +41,8 @@ def spread(dev: NDArray[np.float64], floor: float) -> float:
     >>> round(spread(np.array([-1.0, 0.0, 1.0, 100.0]), 0.1), 3)
     1.583
     """
-    from scipy.stats import median_abs_deviation
-
-    return float(median_abs_deviation(dev, scale="normal")) + floor
+    dev = np.asarray(dev, dtype=float)
+    return float(np.median(np.abs(dev - np.median(dev)))) * MAD_TO_SD + floor
 
 
 def inliers(

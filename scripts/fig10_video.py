@@ -2,7 +2,7 @@
 """Figure 10: from a video to the friction.
 
 Caption: a SYNTHETIC video rendered from the exact solution (configuration section
-fig10_video), tracked by `turntable track` and fitted by `turntable fit VIDEO`. Left, its
+fig10_video), tracked by `turntable track` and fitted from its track by `turntable fit`. Left, its
 first frame with what the tracker found: the rim and the mark's circle as the fitted camera
 sees them, the image of the axis, and the ball's track. Middle, the distance of the tracked
 centre from the true one, in ball radii, against time. Right, the recovered coefficient of

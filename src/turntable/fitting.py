@@ -42,6 +42,14 @@ def _positive(option: str, value: float | None, unit: str) -> None:
         raise InputError(f"{option} must be a finite number > 0 ({unit}); got {value}")
 
 
+def _same_as_tracked(path: str, option: str, value: float | None, tracked: float) -> None:
+    if value is not None and value != tracked:
+        raise InputError(
+            f"{option} {value:g} m: {path} was tracked with {tracked:g} m; track the video "
+            "again to change it"
+        )
+
+
 def _bounds(setup: film_io.Setup) -> dict[str, tuple[float, float]]:
     """Values the fit can take: |x - axis| / R and |t| Omega up to `MAX_DIMENSIONLESS`."""
     span = MAX_DIMENSIONLESS * setup.radius
@@ -109,8 +117,10 @@ def fit_file(
     Parameters
     ----------
     path : str or path-like
-        A film (CSV: t, x, y in s and m), a Tracker export, or a video (a suffix of
-        ``turntable.video.cli.VIDEO_SUFFIXES``, or ``platter_radius`` given).
+        A film (CSV: t, x, y in s and m), a Tracker export, a video (a suffix of
+        ``turntable.video.cli.VIDEO_SUFFIXES``, or ``platter_radius`` given), or the film of
+        a video that ``turntable track`` wrote (FILM.csv, its FILM.json beside it): fitted as
+        its video is, without tracking it again (`turntable.video.saved`).
     radius : float
         The ball's radius, m.
     omega, rpm : float, optional
@@ -195,9 +205,11 @@ def fitted_film(
     if not all(math.isfinite(a) for a in axis):
         raise InputError(f"--axis must be two finite numbers (m); got {list(axis)}")
     from turntable.video.cli import VIDEO_SUFFIXES
+    from turntable.video.saved import is_track
 
-    video = platter_radius is not None or Path(path).suffix.lower() in VIDEO_SUFFIXES
-    if video and platter_radius is None:
+    saved = is_track(path)  # a film of turntable track, its calibration beside it
+    video = saved or platter_radius is not None or Path(path).suffix.lower() in VIDEO_SUFFIXES
+    if video and platter_radius is None and not saved:
         raise InputError(f"{path} is a video: give --platter-radius P (m)")
     if not video and omega is None and rpm is None:
         raise InputError("one of the arguments --omega --rpm is required")
@@ -206,7 +218,13 @@ def fitted_film(
     options = {"fit_omega": fit_omega, "fit_axis": fit_axis or video}
     p = max(fit.n_parameters(m, **options) for m in fit.MODELS)
     tracked = None
-    if video:
+    if saved:
+        from turntable.video.saved import read_track
+
+        tracked, notes = read_track(path)
+        _same_as_tracked(path, "--radius", radius, tracked.ball_radius)
+        _same_as_tracked(path, "--platter-radius", platter_radius, tracked.platter_radius)
+    elif video:
         _positive("--platter-radius", platter_radius, "m")
         from turntable.video.cli import track as track_video
 
@@ -214,6 +232,7 @@ def fitted_film(
             path, radius, platter_radius, rpm, {"ball_at": ball_at, "mark_at": mark_at},
             progress=progress,
         )  # fmt: skip
+    if video:
         for message in notes:
             log.warning(message)
     if omega is None:

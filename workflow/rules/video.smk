@@ -1,5 +1,6 @@
 # From video to friction: a SYNTHETIC video of the ball of section film (section fig10_video),
-# tracked by `turntable track` and fitted by `turntable fit VIDEO`. Its jobs, the campaign's and
+# tracked by `turntable track` and its track fitted by `turntable fit FILM.csv` (the film and
+# its calibration: as the video is fitted, without tracking it again). Its jobs, the campaign's and
 # the claims (priority 1) are the longest chains of the build: they start first.
 import json
 
@@ -68,7 +69,8 @@ rule track_video:
 
 rule fit_video:
     input:
-        video=VIDEO,
+        track=VIDEO_TRACK,
+        calibration=VIDEO_TRACK.replace(".csv", ".json"),
         code=PACKAGE,
     output:
         ensure(VIDEO_FIT, non_empty=True),
@@ -79,8 +81,7 @@ rule fit_video:
         "../envs/turntable.yaml"
     params:
         radius=config["film"]["radius_m"],
-        platter=config["fig10_video"]["platter_radius_m"],
         k=config["film"]["k"],
     shell:
-        "turntable fit {input.video:q} --radius {params.radius} --platter-radius "
-        "{params.platter} --k {params.k} > {output:q} 2> {log:q}"
+        "turntable fit {input.track:q} --radius {params.radius} --k {params.k} > {output:q} "
+        "2> {log:q}"

@@ -206,9 +206,11 @@ def track_command(args: argparse.Namespace, progress: Progress | None = None) ->
         args.plot,
         progress,
     )
+    from turntable.video.saved import saved_json
     from turntable.video.track import calibration_json, video_summary
 
-    write_outputs(out, tracked, calibration_json(tracked, args.ball_radius, args.platter_radius))
+    cal_json = calibration_json(tracked, args.ball_radius, args.platter_radius)
+    write_outputs(out, tracked, cal_json | {"saved": saved_json(tracked, notes)})
     for note in notes:
         log.warning(note)
     cal = tracked.calibration

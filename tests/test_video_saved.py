@@ -1,0 +1,99 @@
+"""``turntable fit FILM.csv`` of a film that ``turntable track`` wrote: the same numbers as
+``turntable fit VIDEO``, without tracking again; a film that its calibration does not make, or
+a ball radius other than the tracked one, is refused with one line. On a small SYNTHETIC video
+(320x180 at 30 frames/s, a clockwise platter and a lens's distortion)."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+
+import pytest
+
+pytest.importorskip("av")
+pytest.importorskip("cv2")
+
+from turntable import cli, film
+from turntable.video.render import Scene, render_video
+
+RADIUS, PLATTER = 0.008, 0.15
+SETUP = film.Setup(RADIUS, film.rpm_to_omega(100.0 / 3.0), 0.4, (0.0, 0.0))
+SCENE = Scene(
+    tilt_deg=30.0,
+    roll_deg=4.0,
+    size=(320, 180),
+    fps=30.0,
+    duration=2.0,
+    lens_k1=0.05,
+    clockwise=True,
+)
+FIT = ["--radius", str(RADIUS), "--k", "0.4"]
+
+
+def run_here(capsys: pytest.CaptureFixture[str], *args: str) -> subprocess.CompletedProcess:
+    try:
+        code = cli.main(list(args))
+    except SystemExit as exc:
+        code = exc.code
+    out, err = capsys.readouterr()
+    return subprocess.CompletedProcess(args, code, out, err)
+
+
+@pytest.fixture(scope="module")
+def tracked(tmp_path_factory: pytest.TempPathFactory):
+    """The video, and the film `turntable track` wrote of it."""
+    folder = tmp_path_factory.mktemp("saved")
+    video = folder / "ball_SYNTHETIC.mp4"
+    render_video(video, "slipping", 2.0, [7.0, 0.0, 0.0, 0.4, 0.0, 0.0], SETUP, SCENE)
+    out = folder / "film.csv"
+    code = cli.main(["track", str(video), "--ball-radius", str(RADIUS), "--platter-radius",
+                     str(PLATTER), "-o", str(out), "-q"])  # fmt: skip
+    assert code == 0
+    return video, out
+
+
+def test_the_fit_of_the_track_is_the_fit_of_the_video(tracked, capsys) -> None:
+    """Every number and every warning alike; only the file named differs."""
+    video, track = tracked
+    of_video = run_here(capsys, "fit", str(video), *FIT, "--platter-radius", str(PLATTER))
+    of_track = run_here(capsys, "fit", str(track), *FIT)
+    assert of_video.returncode == of_track.returncode == 0, of_track.stderr
+    assert of_track.stderr == of_video.stderr
+    a, b = json.loads(of_video.stdout), json.loads(of_track.stdout)
+    assert a["data"].pop("file") == str(video)
+    assert b["data"].pop("file") == str(track)
+    assert a["video"].pop("file") == b["video"].pop("file") == str(video)
+    assert a == b
+    assert a["video"]["stderr_parts"]  # the camera's uncertainty carried
+
+
+@pytest.mark.parametrize(
+    ("change", "args", "says"),
+    [
+        pytest.param("position", FIT, "its positions are not those", id="film-edited"),
+        pytest.param(
+            "none", ["--radius", "0.009", "--k", "0.4"], "was tracked with 0.008 m", id="radius"
+        ),
+        pytest.param(
+            "none",
+            [*FIT, "--platter-radius", "0.2"],
+            "was tracked with 0.15 m",
+            id="platter-radius",
+        ),
+    ],
+)
+def test_a_track_that_does_not_hold_together_is_refused(tracked, tmp_path, capsys, change, args,
+                                                       says) -> None:  # fmt: skip
+    """Exit status 2, one line naming the file or option."""
+    _, track = tracked
+    lines = track.read_text().splitlines()
+    if change == "position":
+        t, x, y = lines[-1].split(",")
+        lines[-1] = f"{t},{float(x) + 1e-4:.10g},{y}"
+    copy = tmp_path / "film.csv"
+    copy.write_text("\n".join(lines) + "\n")
+    copy.with_suffix(".json").write_text(track.with_suffix(".json").read_text())
+    res = run_here(capsys, "fit", str(copy), *args)
+    assert res.returncode == 2, res.stderr
+    assert len(res.stderr.strip().splitlines()) == 1, res.stderr
+    assert says in res.stderr

@@ -88,12 +88,13 @@ def mp_big(mu0: float, k: float) -> mpmath.matrix:
     return out
 
 
-def mp_roots(mu0: float, k: float) -> list[complex]:
+@functools.cache
+def mp_roots(mu0: float, k: float) -> tuple[complex, ...]:
     """The four nonzero eigenvalues of L at 40 digits, by real part, largest first."""
     with mpmath.workdps(40):
         ev = mpmath.eig(mp_big(mu0, k), left=False, right=False)
         nonzero = sorted((e for e in ev if abs(e) > mpmath.mpf(10) ** -20), key=lambda e: -e.real)
-        return [complex(e) for e in nonzero]
+        return tuple(complex(e) for e in nonzero)
 
 
 def rates(mu0: float, k: float) -> tuple[float, float, float]:

@@ -271,9 +271,11 @@ def _outline_fit(share, start, radius: float, fallback, rays: int, min_points: i
     fall = (prof[:, :-2] - prof[:, 2:]) / (2 * RAY_STEP)  # centred, at samples 1 .. n-2
     peaked = np.maximum.accumulate(prof[:, :-2], axis=1) > THRESHOLD
     # 2. the first steep fall to near the platter on each ray
+    top = fall.max(axis=1, keepdims=True)
+    strong = (fall >= STEEP * top) & (prof[:, 1:-1] < prof[:, :1]) & (top > MIN_FALL) & peaked
     found = []
-    for k in range(rays):
-        got = _first_fall(fall[k], prof[k], peaked[k])
+    for k, (f, p, starts) in enumerate(zip(fall.tolist(), prof.tolist(), strong, strict=True)):
+        got = _first_fall(f, p, np.flatnonzero(starts).tolist())
         if got is not None:
             found.append((k, *got))
     if len(found) < min_points:
@@ -294,24 +296,26 @@ def _profiles(share, start, radius: float, rays: int):
     return r, a, prof
 
 
-def _first_fall(f, p, peaked) -> tuple[int, int, int] | None:
+def _first_fall(f: list[float], p: list[float], starts: list[int]) -> tuple[int, int, int] | None:
     """The first fall of a ray at least `STEEP` of its steepest, from above `THRESHOLD`,
     that ends below `BELOW`: where it begins, its steepest point and where it ends (indices
-    of ``f``, the fall per px); None if none.  A fall is taken whole, while it stays above
-    half its own steepest (a ripple on its way down does not end it)."""
-    top = f.max()
+    of ``f``, the fall per px); None if none.  ``starts``: where the fall is that steep,
+    below the ray's start and past a share above `THRESHOLD` (the ray's fall reaching
+    `MIN_FALL`).  A fall is taken whole, while it stays above half its own steepest (a
+    ripple on its way down does not end it).  On lists: a ray is some 60 samples, which
+    numpy takes longer to index than Python."""
     beyond = int(BEYOND_PX / RAY_STEP)
-    strong = (f >= STEEP * top) & (p[1:-1] < p[0]) & (top > MIN_FALL) & peaked
     end = None
-    for i in np.flatnonzero(strong):
+    for i in starts:
         if end is not None and i <= end:
             continue
         end, peak = i, f[i]
-        while end + 1 < f.size and f[end + 1] > STEEP * peak:
+        while end + 1 < len(f) and f[end + 1] > STEEP * peak:
             end += 1
             peak = max(peak, f[end])
-        j = i + int(np.argmax(f[i : end + 1]))
-        if p[min(j + 1 + beyond, p.size - 1)] < BELOW:
+        run = f[i : end + 1]
+        j = i + run.index(max(run))
+        if p[min(j + 1 + beyond, len(p) - 1)] < BELOW:
             break  # a fall to near the platter or a shadow, not off a highlight
     else:
         return None

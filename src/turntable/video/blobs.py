@@ -273,9 +273,12 @@ def _outline_fit(share, start, radius: float, fallback, rays: int, min_points: i
     # 2. the first steep fall to near the platter on each ray
     top = fall.max(axis=1, keepdims=True)
     strong = (fall >= STEEP * top) & (prof[:, 1:-1] < prof[:, :1]) & (top > MIN_FALL) & peaked
+    ray, sample = np.nonzero(strong)
+    ends = np.searchsorted(ray, np.arange(1, rays + 1)).tolist()
+    sample = sample.tolist()
     found = []
-    for k, (f, p, starts) in enumerate(zip(fall.tolist(), prof.tolist(), strong, strict=True)):
-        got = _first_fall(f, p, np.flatnonzero(starts).tolist())
+    for k, (f, p) in enumerate(zip(fall.tolist(), prof.tolist(), strict=True)):
+        got = _first_fall(f, p, sample[ends[k - 1] if k else 0 : ends[k]])
         if got is not None:
             found.append((k, *got))
     if len(found) < min_points:

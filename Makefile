@@ -85,8 +85,9 @@ $(DOCS_STAMP): $(BUILD_STAMP)
 test: $(STAMP)
 	$(BIN)/python -m pytest -n 2
 
-# The tests marked slow (a dry run of the whole workflow, a Jupyter kernel, a video of a
-# phone's camera each, or the wheel installed in a fresh venv): run by CI.
+# The tests marked slow (the shared build of the workflow and every test that reads it, the
+# coverage campaigns of the fit's error bars, a dry run of the whole workflow, a Jupyter kernel,
+# a video of a phone's camera, or the wheel installed in a fresh venv): run by CI.
 test-slow: $(STAMP)
 	$(BIN)/python -m pytest -n 2 -m slow
 

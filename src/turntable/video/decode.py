@@ -237,26 +237,30 @@ def _rgb(picture: Picture, box: tuple[slice, slice] | None) -> NDArray[np.float3
     import cv2
 
     rows, cols = box or (slice(0, picture.y.shape[0]), slice(0, picture.y.shape[1]))
-    y = picture.y[rows, cols].astype(np.float32)
+    y = picture.y[rows, cols]
     h, w = y.shape
     # dst (x, y) of the window -> chroma (x / 2, (y - 0.5) / 2), both offset by the window
     m = np.array([[0.5, 0.0, cols.start / 2.0], [0.0, 0.5, (rows.start - 0.5) / 2.0]], np.float32)
     flags = cv2.INTER_LINEAR | cv2.WARP_INVERSE_MAP
     cb, cr = (
-        cv2.warpAffine(c, m, (w, h), flags=flags, borderMode=cv2.BORDER_REPLICATE).astype(
-            np.float32
-        )
+        cv2.warpAffine(c, m, (w, h), flags=flags, borderMode=cv2.BORDER_REPLICATE)
         for c in (picture.cb, picture.cr)
     )
-    if picture.full_range:
-        yy, cbb, crr = y / 255.0, (cb - 128.0) / 255.0, (cr - 128.0) / 255.0
-    else:
-        yy, cbb, crr = (y - 16.0) / 219.0, (cb - 128.0) / 224.0, (cr - 128.0) / 224.0
-    rgb = np.empty((h, w, 3), np.float32)
-    rgb[..., 0] = yy + 1.402 * crr
-    rgb[..., 1] = yy - 0.344136 * cbb - 0.714136 * crr
-    rgb[..., 2] = yy + 1.772 * cbb
+    ycbcr = cv2.merge([np.ascontiguousarray(y), cb, cr]).astype(np.float32)
+    rgb = cv2.transform(ycbcr, _YCBCR_TO_RGB[picture.full_range])
     return np.clip(rgb, 0.0, 1.0, out=rgb)
+
+
+def _ycbcr_to_rgb(full_range: bool) -> NDArray[np.float64]:
+    """(R, G, B) = M (Y, Cb, Cr, 1), BT.601, in [0, 1]: Y of 16-235 and Cb, Cr of 16-240 about
+    128 (or 0-255 where ``full_range``)."""
+    ay, by = (1 / 255, 0.0) if full_range else (1 / 219, -16 / 219)
+    ac = 1 / 255 if full_range else 1 / 224
+    cb, cr = np.array([[0.0, 1.402], [-0.344136, -0.714136], [1.772, 0.0]]).T * ac
+    return np.column_stack([np.full(3, ay), cb, cr, by - 128 * (cb + cr)])
+
+
+_YCBCR_TO_RGB = {full: _ycbcr_to_rgb(full) for full in (False, True)}
 
 
 def yuv420(rgb_img: NDArray[np.uint8]) -> NDArray[np.uint8]:

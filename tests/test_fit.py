@@ -728,6 +728,7 @@ def test_coefficient_at_a_bound_is_a_limit() -> None:
     assert fit.fitted_coefficient(out, "slipping") == pytest.approx(f.coefficient)
 
 
+@pytest.mark.slow  # films of every length, both models fitted to each: CI runs it
 def test_few_frames_refuse_a_selection_or_select_right() -> None:
     """Films of a few frames at 240 frames/s, where the two motions cannot differ: with 5
     frames plain AIC selected the slipping model for a rolling film with a difference above
@@ -802,6 +803,7 @@ def test_distinguishability_needs_enough_frames() -> None:
         fit.measurability([3.0], START, RIG, camera)
 
 
+@pytest.mark.slow  # seeds of short films: CI runs it
 @pytest.mark.parametrize("model", fit.MODELS)
 def test_film_under_one_turn(model: str) -> None:
     """1.2 s at 60 frames/s, two thirds of a turn of the turntable and a fifth of a turn of
@@ -851,6 +853,7 @@ def test_log_interval() -> None:
     assert any("only indicative" in w for w in warnings), warnings
 
 
+@pytest.mark.slow  # fits across the grid of coefficients: CI runs it
 def test_bound_is_reached_only_below_the_reliable_level() -> None:
     """Fig. 8 draws the Cramer-Rao bound solid where the predicted relative error is below
     reliable_relative_error (configuration, 0.2).  Checked on 40 films at a point below

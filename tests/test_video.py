@@ -192,6 +192,7 @@ def test_a_rolling_shutter_is_measured_from_the_mark(tmp_path) -> None:
     assert np.sqrt(np.mean(position_errors(track, truth) ** 2)) < 0.05 * RADIUS
 
 
+@pytest.mark.slow  # a render and a tracking at 960x540: CI runs it
 def test_a_mark_faster_than_its_window_is_followed_from_the_first_frame(tmp_path) -> None:
     """45 rpm at 30 frames/s, 960x540: the mark moves about 30 px a frame, several times its
     size.  Until its rate is known it is looked for as far as a platter can turn in a frame.
@@ -357,18 +358,25 @@ def test_seeds_on_the_ball_and_the_mark_give_the_same_track(rendered, tmp_path, 
     np.testing.assert_allclose(film.read_film(out).x, track.film.x, atol=0.02 * RADIUS)
 
 
+#: A refusal after the whole video is tracked (its checks): seconds each, in CI only.
+SLOW = pytest.mark.slow
+
+
 @pytest.mark.parametrize(
     ("options", "says"),
     [
         pytest.param(("--ball-at", "mark"), "--ball-at", id="mark-seeded-as-ball"),
-        pytest.param(("--mark-at", "ball"), "--mark-at", id="ball-seeded-as-mark"),
-        pytest.param(("--rpm", "34"), "not at the given --rpm 34", id="rpm-2-percent-off"),
-        pytest.param(("--ball-radius", "0.012"), "ball's image is", id="radius-half-again"),
-        pytest.param(("--ball-radius", "0.0104"), "ball's image is", id="radius-three-tenths-more"),
+        pytest.param(("--mark-at", "ball"), "--mark-at", id="ball-seeded-as-mark", marks=SLOW),
+        pytest.param(("--rpm", "34"), "not at the given --rpm 34", id="rpm-2-percent-off",
+                     marks=SLOW),
+        pytest.param(("--ball-radius", "0.012"), "ball's image is", id="radius-half-again",
+                     marks=SLOW),
+        pytest.param(("--ball-radius", "0.0104"), "ball's image is",
+                     id="radius-three-tenths-more", marks=SLOW),
         pytest.param(("--ball-radius", "0.016"), "check --ball-radius", id="radius-twice"),
         pytest.param(("--mark-at", "3,3"), "--mark-at 3,3: nothing there", id="seed-on-nothing"),
     ],
-)
+)  # fmt: skip
 def test_a_track_that_contradicts_itself_is_refused(
     rendered, options, says, tmp_path, capsys
 ) -> None:
@@ -446,17 +454,18 @@ SCENES = {
         "grooves": 10.0, "jitter": 0.3, "size": (1280, 720), "duration": 1.0,
     },
 }  # fmt: skip
+#: In CI only, with the slow tests: the phone's camera at 1280x720, and the red balls (a
+#: render and a tracking each, seconds; make test keeps the dark ball and the steel one).
+SLOW_SCENES = {"phone-lens-shutter-flicker", "red-ball-grey-platter-tape", "red-ball-tape-tilt-32"}
 
 
 @pytest.mark.parametrize(
     "fields",
     [
-        pytest.param(
-            fields, id=name, marks=[pytest.mark.slow] * (name == "phone-lens-shutter-flicker")
-        )
+        pytest.param(fields, id=name, marks=[pytest.mark.slow] * (name in SLOW_SCENES))
         for name, fields in SCENES.items()
     ],
-)  # the phone's camera at 1280x720 (4 s) in CI only, with the slow tests
+)
 def test_scenes_a_person_films_are_tracked(fields, tmp_path) -> None:
     """A coloured, dark, specular or green ball, a strip of tape or a dark mark, a shadow, a
     label, a phone's lens and shutter: tracked to within 0.05 R, Omega within 0.5 %."""

@@ -34,7 +34,7 @@ def _no_slip_run(z0: NDArray[np.float64], k: float, t: NDArray[np.float64]) -> d
     import scipy.linalg
 
     big = con.no_slip_matrix(k)
-    z = np.array([scipy.linalg.expm(big * ti) @ z0 for ti in t])
+    z = scipy.linalg.expm(big * t[:, None, None]) @ z0  # one exponential per time
     rc = (con.momentum_matrix(k) @ z0) / k  # at rest (v = 0) the momentum is k w = k r_c
     rho = z[:, :2] - rc
     dist = np.hypot(*rho.T)

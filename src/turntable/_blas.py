@@ -12,18 +12,20 @@ import os
 BLAS_THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")
 
 
-def one_blas_thread() -> None:
+def one_blas_thread(loaded: bool = True) -> None:
     """Limit this process's BLAS to one thread, unless the environment sets a number.
 
     With none of `BLAS_THREAD_VARIABLES` set, each is set to 1 (for the commands this process
-    starts and for the libraries loaded later, which read them) and the BLAS libraries already
-    loaded are limited to one thread (`threadpoolctl.threadpool_limits`, where installed); the
-    limit holds until the process ends.
+    starts and for the libraries loaded later, which read them) and, with ``loaded``, the BLAS
+    libraries already loaded are limited to one thread (`threadpoolctl.threadpool_limits`,
+    where installed); the limit holds until the process ends.
     """
     if any(var in os.environ for var in BLAS_THREAD_VARIABLES):
         return
     for var in BLAS_THREAD_VARIABLES:
         os.environ[var] = "1"
+    if not loaded:
+        return
     try:
         from threadpoolctl import threadpool_limits
     except ImportError:  # numpy alone: the variables hold for what is loaded later

@@ -21,7 +21,7 @@ if not Path(turntable.__file__).resolve().is_relative_to(ROOT / "src"):
 
 # One BLAS thread in each job (and its commands), unless the environment sets a number: jobs
 # run side by side, one per core, and their matrices are small.
-one_blas_thread()
+one_blas_thread(loaded=False)
 
 
 def _sorted(value):

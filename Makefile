@@ -86,8 +86,8 @@ test: $(STAMP)
 	$(BIN)/python -m pytest -n 2
 
 # The tests marked slow (the shared build of the workflow and every test that reads it, the
-# coverage campaigns of the fit's error bars, a dry run of the whole workflow, a Jupyter kernel,
-# a video of a phone's camera, or the wheel installed in a fresh venv): run by CI.
+# coverage campaigns of the fit, videos rendered and tracked for seconds each, a dry run of the
+# whole workflow, a Jupyter kernel, or the wheel installed in a fresh venv): run by CI.
 test-slow: $(STAMP)
 	$(BIN)/python -m pytest -n 2 -m slow
 

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import json
 import subprocess
+from pathlib import Path
 
 import pytest
 
@@ -67,33 +68,75 @@ def test_the_fit_of_the_track_is_the_fit_of_the_video(tracked, capsys) -> None:
     assert a["video"]["stderr_parts"]  # the camera's uncertainty carried
 
 
+def _moved(lines: list[str], doc: dict) -> None:
+    t, x, y = lines[-1].split(",")
+    lines[-1] = f"{t},{float(x) + 1e-4:.10g},{y}"
+
+
+def _lost(lines: list[str], doc: dict) -> None:
+    """Frame 5 lost: its row and its image gone, named among the lost frames."""
+    rows = [i for i, line in enumerate(lines) if line[:1].isdigit()]
+    del lines[rows[5]]
+    doc["saved"]["ball_image_px"][5] = None
+    doc["lost_frames"] = [5]
+
+
+def _older(lines: list[str], doc: dict) -> None:
+    del doc["saved"]["lens_shift"]
+
+
+def _not_a_track(lines: list[str], doc: dict) -> None:
+    del doc["saved"]
+
+
+def _copy(track: Path, folder: Path, edit=None) -> Path:
+    """FILM.csv and FILM.json of ``track`` in ``folder``, changed by ``edit(lines, doc)``."""
+    lines = track.read_text().splitlines()
+    doc = json.loads(track.with_suffix(".json").read_text())
+    if edit is not None:
+        edit(lines, doc)
+    copy = folder / "film.csv"
+    copy.write_text("\n".join(lines) + "\n\n")  # a blank line at the end is read as none
+    copy.with_suffix(".json").write_text(json.dumps(doc))
+    return copy
+
+
 @pytest.mark.parametrize(
-    ("change", "args", "says"),
+    ("edit", "args"),
     [
-        pytest.param("position", FIT, "its positions are not those", id="film-edited"),
-        pytest.param(
-            "none", ["--radius", "0.009", "--k", "0.4"], "was tracked with 0.008 m", id="radius"
-        ),
-        pytest.param(
-            "none",
-            [*FIT, "--platter-radius", "0.2"],
-            "was tracked with 0.15 m",
-            id="platter-radius",
-        ),
+        pytest.param(None, FIT, id="as-written"),
+        pytest.param(None, [*FIT, "--omega", "3.5"], id="omega-given"),
+        pytest.param(_lost, FIT, id="a-frame-lost"),
+        pytest.param(_not_a_track, [*FIT, "--rpm", "33.3"], id="json-without-saved-is-a-film"),
     ],
 )
-def test_a_track_that_does_not_hold_together_is_refused(tracked, tmp_path, capsys, change, args,
+def test_a_track_is_fitted(tracked, tmp_path, capsys, edit, args) -> None:
+    _, track = tracked
+    res = run_here(capsys, "fit", str(_copy(track, tmp_path, edit)), *args)
+    assert res.returncode == 0, res.stderr
+    out = json.loads(res.stdout)
+    assert ("video" in out) == (edit is not _not_a_track)
+
+
+@pytest.mark.parametrize(
+    ("edit", "args", "says"),
+    [
+        pytest.param(_moved, FIT, "its positions are not those", id="film-edited"),
+        pytest.param(_older, FIT, "not the calibration of a film that this version",
+                     id="json-of-another-version"),
+        pytest.param(None, ["--radius", "0.009", "--k", "0.4"], "was tracked with 0.008 m",
+                     id="radius"),
+        pytest.param(None, [*FIT, "--platter-radius", "0.2"], "was tracked with 0.15 m",
+                     id="platter-radius"),
+        pytest.param(None, [*FIT, "--rpm", "45"], "--rpm 45: ", id="rpm-not-tracked-with"),
+        pytest.param(None, [*FIT, "--ball-at", "3,3"], "--ball-at: ", id="seed"),
+    ],
+)  # fmt: skip
+def test_a_track_that_does_not_hold_together_is_refused(tracked, tmp_path, capsys, edit, args,
                                                        says) -> None:  # fmt: skip
     """Exit status 2, one line naming the file or option."""
     _, track = tracked
-    lines = track.read_text().splitlines()
-    if change == "position":
-        t, x, y = lines[-1].split(",")
-        lines[-1] = f"{t},{float(x) + 1e-4:.10g},{y}"
-    copy = tmp_path / "film.csv"
-    copy.write_text("\n".join(lines) + "\n")
-    copy.with_suffix(".json").write_text(track.with_suffix(".json").read_text())
-    res = run_here(capsys, "fit", str(copy), *args)
+    res = run_here(capsys, "fit", str(_copy(track, tmp_path, edit)), *args)
     assert res.returncode == 2, res.stderr
     assert len(res.stderr.strip().splitlines()) == 1, res.stderr
     assert says in res.stderr

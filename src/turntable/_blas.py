@@ -1,4 +1,5 @@
-"""One BLAS thread per process, for the command line, the workflow's jobs and the benchmarks.
+"""One BLAS thread per process, for the command line and the benchmarks (Snakemake gives each
+job as many as its rule's threads, one here).
 
 Every matrix here is small (6x6, or a Jacobian of some thousand rows and ten columns): BLAS
 threads only wait for each other, and on a busy machine of 2 cores a tracking takes twice as
@@ -12,20 +13,18 @@ import os
 BLAS_THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")
 
 
-def one_blas_thread(loaded: bool = True) -> None:
+def one_blas_thread() -> None:
     """Limit this process's BLAS to one thread, unless the environment sets a number.
 
     With none of `BLAS_THREAD_VARIABLES` set, each is set to 1 (for the commands this process
-    starts and for the libraries loaded later, which read them) and, with ``loaded``, the BLAS
-    libraries already loaded are limited to one thread (`threadpoolctl.threadpool_limits`,
-    where installed); the limit holds until the process ends.
+    starts and for the libraries loaded later, which read them) and the BLAS libraries already
+    loaded are limited to one thread (`threadpoolctl.threadpool_limits`, with the extra
+    ``cli``); the limit holds until the process ends.
     """
     if any(var in os.environ for var in BLAS_THREAD_VARIABLES):
         return
     for var in BLAS_THREAD_VARIABLES:
         os.environ[var] = "1"
-    if not loaded:
-        return
     try:
         from threadpoolctl import threadpool_limits
     except ImportError:  # numpy alone: the variables hold for what is loaded later

@@ -42,11 +42,13 @@ def _positive(option: str, value: float | None, unit: str) -> None:
         raise InputError(f"{option} must be a finite number > 0 ({unit}); got {value}")
 
 
-def _same_as_tracked(path: str, option: str, value: float | None, tracked: float) -> None:
+def _same_as_tracked(
+    path: str, option: str, value: float | None, tracked: float, unit: str
+) -> None:
     if value is not None and value != tracked:
         raise InputError(
-            f"{option} {value:g} m: {path} was tracked with {tracked:g} m; track the video "
-            "again to change it"
+            f"{option} {value:g}{unit}: {path} was tracked with {tracked:g}{unit}; track the "
+            "video again to change it"
         )
 
 
@@ -221,9 +223,20 @@ def fitted_film(
     if saved:
         from turntable.video.saved import read_track
 
-        tracked, notes = read_track(path)
-        _same_as_tracked(path, "--radius", radius, tracked.ball_radius)
-        _same_as_tracked(path, "--platter-radius", platter_radius, tracked.platter_radius)
+        if ball_at or mark_at:
+            raise InputError(
+                f"--{'ball' if ball_at else 'mark'}-at: {path} is a track; a seed is for its "
+                "video (turntable track VIDEO --ball-at/--mark-at)"
+            )
+        tracked, notes, tracked_rpm = read_track(path)
+        _same_as_tracked(path, "--radius", radius, tracked.ball_radius, " m")
+        _same_as_tracked(path, "--platter-radius", platter_radius, tracked.platter_radius, " m")
+        if rpm is not None and rpm != tracked_rpm:
+            raise InputError(
+                f"--rpm {rpm:g}: {path} was tracked "
+                + (f"with --rpm {tracked_rpm:g}" if tracked_rpm else "without --rpm")
+                + "; track the video again to check its rate against another (or give --omega)"
+            )
     elif video:
         _positive("--platter-radius", platter_radius, "m")
         from turntable.video.cli import track as track_video

@@ -9,7 +9,6 @@ import turntable.config
 import yaml
 from snakemake.exceptions import WorkflowError
 from snakemake.io import apply_wildcards
-from turntable._blas import one_blas_thread
 from turntable.provenance import git_state
 
 ROOT = Path(workflow.basedir).parent
@@ -18,10 +17,6 @@ if not Path(turntable.__file__).resolve().is_relative_to(ROOT / "src"):
         f"Python imports turntable from {Path(turntable.__file__).parent}, not from "
         f"{ROOT / 'src'}: a copied or moved tree needs its own .venv (rm -rf .venv && make)."
     )
-
-# One BLAS thread in each job (and its commands), unless the environment sets a number: jobs
-# run side by side, one per core, and their matrices are small.
-one_blas_thread(loaded=False)
 
 
 def _sorted(value):

@@ -210,7 +210,7 @@ def track_command(args: argparse.Namespace, progress: Progress | None = None) ->
     from turntable.video.track import calibration_json, video_summary
 
     cal_json = calibration_json(tracked, args.ball_radius, args.platter_radius)
-    write_outputs(out, tracked, cal_json | {"saved": saved_json(tracked, notes)})
+    write_outputs(out, tracked, cal_json | {"saved": saved_json(tracked, notes, args.rpm)})
     for note in notes:
         log.warning(note)
     cal = tracked.calibration

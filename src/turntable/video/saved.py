@@ -35,10 +35,12 @@ NAMES = [
 MATCH = 1e-8
 
 
-def saved_json(track: Track, warnings: list[str]) -> dict[str, Any]:
-    """What `read_track` needs beyond the calibration's JSON, under ``"saved"``."""
+def saved_json(track: Track, warnings: list[str], rpm: float | None) -> dict[str, Any]:
+    """What `read_track` needs beyond the calibration's JSON, under ``"saved"`` (``rpm``: the
+    ``--rpm`` the tracking was given, or None)."""
     cal = track.calibration
     return {
+        "rpm_given": rpm,
         "parameters": dict(zip(NAMES, map(float, cal.parameters), strict=True)),
         "covariance": cal.covariance.tolist(),
         "lens_shift": cal.lens.shift.tolist(),
@@ -56,13 +58,13 @@ def _json_of(path: str | Path) -> Path:
 def is_track(path: str | Path) -> bool:
     """Whether ``path`` is a film written by ``turntable track`` with its calibration beside
     it (FILM.json with ``"saved"``)."""
-    twin = _json_of(path)
-    if Path(path).suffix.lower() != ".csv" or not twin.is_file():
+    if Path(path).suffix.lower() != ".csv":
         return False
     try:
-        return "saved" in json.loads(twin.read_text())
-    except (ValueError, UnicodeDecodeError):
+        doc = json.loads(_json_of(path).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
         return False
+    return isinstance(doc, dict) and "saved" in doc
 
 
 def _calibration(doc: dict[str, Any], size: tuple[int, int]) -> Calibration:
@@ -95,15 +97,29 @@ def _calibration(doc: dict[str, Any], size: tuple[int, int]) -> Calibration:
     )
 
 
-def read_track(path: str | Path) -> tuple[Track, list[str]]:
+def read_track(path: str | Path) -> tuple[Track, list[str], float | None]:
     """The `Track` of a film written by ``turntable track`` (its positions, times and
-    calibration; without the video's pictures), and the tracking's warnings.
+    calibration; without the video's pictures), the tracking's warnings and the ``--rpm`` it
+    was given (None if none).
 
     Raises
     ------
     InputError
-        The calibration beside the film is not of this film (it makes other positions).
+        FILM.json is not one that this version of ``turntable track`` writes, or the film is
+        not the one its calibration makes (edited, or another track's).
     """
+    try:
+        track, saved = _read(path)
+    except (KeyError, TypeError, ValueError, OSError) as exc:
+        raise InputError(
+            f"{_json_of(path)}: not the calibration of a film that this version of turntable "
+            f"track writes ({type(exc).__name__}: {exc}); track the video again"
+        ) from None
+    _check_film(path, track.film)
+    return track, list(saved["warnings"]), saved["rpm_given"]
+
+
+def _read(path: str | Path) -> tuple[Track, dict[str, Any]]:
     from turntable.film import Film
     from turntable.video.decode import VideoInfo
     from turntable.video.platter import Ellipse
@@ -136,20 +152,21 @@ def read_track(path: str | Path) -> tuple[Track, list[str]]:
         candidates=[],
     )
     film, _ = film_with(track, track.calibration.parameters)
-    film = film._replace(synthetic=info.synthetic)
-    _check_film(path, film)
-    return track._replace(film=film), list(saved["warnings"])
+    return track._replace(film=film._replace(synthetic=info.synthetic)), saved
 
 
 def _check_film(path: str | Path, film) -> None:
     """Refuse a film whose CSV the calibration beside it does not make (edited, or another
     track's)."""
-    lines = [line for line in Path(path).read_text().splitlines() if not line.startswith("#")]
-    rows = np.array([line.split(",") for line in lines[1:]], float).reshape(-1, 3)
+    from turntable.film import read_film
+
+    read = read_film(path)
+    rows = np.column_stack([read.t, read.x, read.y])
     made = np.column_stack([film.t, film.x, film.y])
     scale = np.maximum(np.abs(made).max(axis=0, initial=0.0), 1e-300)
     if rows.shape != made.shape or not (np.abs(rows - made) <= MATCH * scale).all():
         raise InputError(
             f"{path}: its positions are not those that {_json_of(path).name} makes of the "
-            "ball's images: the film or its calibration was changed; track the video again"
+            "ball's images (the film or its calibration was changed): track the video again, "
+            f"or move {_json_of(path).name} away to fit the film alone (--rpm or --omega)"
         )

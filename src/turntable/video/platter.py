@@ -44,6 +44,9 @@ RIM_ROUNDS, RIM_SPREADS, RIM_FLOOR, MIN_RIM_POINTS = 3, 4.0, 0.05, 20
 #: On later frames, the rim's points within this (px) of the rim (the ball or the mark at the
 #: rim left out).
 RIM_AGAIN_PX = 1.5
+#: The rim is looked for along its normals, sampled every ``STEP_PX`` px, within ``REACH_PX``
+#: px of the ellipse it is refined about.
+STEP_PX, REACH_PX = 0.25, 6.0
 #: The top's edge, going out along a normal from ``SIDE_REACH`` of b inside the outline: where
 #: the colour first differs from the platter's by ``SIDE_CONTRAST`` (CIELAB units) and
 #: ``SIDE_GRAIN`` times the platter's grain (its median distance from its own colour), at
@@ -158,12 +161,11 @@ def platter_colours(lab: NDArray[np.float32], rim: Ellipse) -> Platter:
     )
 
 
-def rim_points(
-    level: NDArray[np.float32], rim: Ellipse, n: int = 360, reach: float = 6.0
-) -> NDArray[np.float64]:
-    """Points of the rim to a fraction of a pixel: where ``level`` (0 outside, 1 on the
-    platter) crosses 1/2 along the normal of ``rim`` at ``n`` angles (the crossing nearest the
-    ellipse)."""
+def _along_normals(
+    img: NDArray[np.float32], rim: Ellipse, n: int, steps: NDArray[np.float64]
+) -> tuple[NDArray[np.float64], NDArray[np.float32]]:
+    """The points ``steps`` px along the normal of ``rim`` at ``n`` angles (n, steps, 2), and
+    ``img``, smoothed over a pixel, sampled at them (n, steps)."""
     s = np.linspace(0, 2 * math.pi, n, endpoint=False)
     c, si = math.cos(rim.angle), math.sin(rim.angle)
     u1, u2 = np.array([c, si]), np.array([-si, c])
@@ -172,16 +174,27 @@ def rim_points(
     )
     normal = (rim.b * np.cos(s))[:, None] * u1 + (rim.a * np.sin(s))[:, None] * u2
     normal /= np.linalg.norm(normal, axis=1, keepdims=True)
-    steps = np.arange(-reach, reach + 1e-9, 0.25)
     pts = on[:, None, :] + steps[None, :, None] * normal[:, None, :]
-    smooth = cv2.GaussianBlur(level, (0, 0), 1.0)
+    smooth = cv2.GaussianBlur(img, (0, 0), 1.0)
     prof = cv2.remap(
         smooth,
         pts[..., 0].astype(np.float32),
         pts[..., 1].astype(np.float32),
         cv2.INTER_LINEAR,
         borderMode=cv2.BORDER_REPLICATE,
-    ) - np.float32(0.5)
+    )
+    return pts, prof
+
+
+def rim_points(
+    level: NDArray[np.float32], rim: Ellipse, n: int = 360, reach: float = REACH_PX
+) -> NDArray[np.float64]:
+    """Points of the rim to a fraction of a pixel: where ``level`` (0 outside, 1 on the
+    platter) crosses 1/2 along the normal of ``rim`` at ``n`` angles (the crossing nearest the
+    ellipse)."""
+    steps = np.arange(-reach, reach + 1e-9, STEP_PX)
+    pts, prof = _along_normals(level, rim, n, steps)
+    prof = prof - np.float32(0.5)
     out = []
     centre = len(steps) // 2
     for k in range(n):
@@ -236,25 +249,9 @@ def _first_departures(distance, rim: Ellipse, level: float, reach_in: float, n: 
     inside it, the colour's ``distance`` from the platter's first passes ``level``: the
     crossing, nearest that point, of the half-way level between its values `SIDE_PLATEAU_PX`
     either side (px), and how far it lies from ``rim`` (px, negative inside)."""
-    s = np.linspace(0, 2 * math.pi, n, endpoint=False)
-    c, si = math.cos(rim.angle), math.sin(rim.angle)
-    u1, u2 = np.array([c, si]), np.array([-si, c])
-    on = (
-        np.array(rim.centre) + (rim.a * np.cos(s))[:, None] * u1 + (rim.b * np.sin(s))[:, None] * u2
-    )
-    normal = (rim.b * np.cos(s))[:, None] * u1 + (rim.a * np.sin(s))[:, None] * u2
-    normal /= np.linalg.norm(normal, axis=1, keepdims=True)
-    steps = np.arange(-reach_in, 6.0 + 1e-9, 0.25)
-    pts = on[:, None, :] + steps[None, :, None] * normal[:, None, :]
-    smooth = cv2.GaussianBlur(distance.astype(np.float32), (0, 0), 1.0)
-    prof = cv2.remap(
-        smooth,
-        pts[..., 0].astype(np.float32),
-        pts[..., 1].astype(np.float32),
-        cv2.INTER_LINEAR,
-        borderMode=cv2.BORDER_REPLICATE,
-    )
-    beyond = int(SIDE_PLATEAU_PX / 0.25)
+    steps = np.arange(-reach_in, REACH_PX + 1e-9, STEP_PX)
+    pts, prof = _along_normals(distance.astype(np.float32), rim, n, steps)
+    beyond = int(SIDE_PLATEAU_PX / STEP_PX)
     out, depth = [], []
     for k in range(n):
         p = prof[k]
@@ -263,7 +260,7 @@ def _first_departures(distance, rim: Ellipse, level: float, reach_in: float, n: 
             continue
         j = int(above[0])
         half = 0.5 * (p[max(j - beyond, 0)] + p[min(j + beyond, p.size - 1)])
-        while j > 0 and p[j - 1] > half:  # back down to the crossing of half the plateau
+        while j > 0 and p[j - 1] > half:  # back down to the half-way crossing
             j -= 1
         while j < p.size - 1 and p[j] < half:  # or on up to it
             j += 1
@@ -271,7 +268,7 @@ def _first_departures(distance, rim: Ellipse, level: float, reach_in: float, n: 
             continue
         frac = (half - p[j - 1]) / max(p[j] - p[j - 1], 1e-6)
         out.append(pts[k, j - 1] + frac * (pts[k, j] - pts[k, j - 1]))
-        depth.append(steps[j - 1] + frac * 0.25)
+        depth.append(steps[j - 1] + frac * STEP_PX)
     return np.array(out).reshape(-1, 2), np.array(depth)
 
 

@@ -445,6 +445,12 @@ SCENES = {
         "table_colour": (60, 60, 65), "mark_colour": (20, 20, 120), "mark_shape": "square",
         "shadow": 0.5, "light_azimuth_deg": 150.0, "light_elevation_deg": 55.0,
     },
+    "dark-ball-shadow-on-a-label": {  # ball, shadow and label one region; its edge a ring
+        "ball_colour": (30, 30, 150), "platter_colour": (200, 195, 185),
+        "table_colour": (60, 60, 65), "mark_colour": (20, 110, 20), "mark_shape": "square",
+        "shadow": 0.6, "light_azimuth_deg": 0.0, "light_elevation_deg": 35.0,
+        "label_radius": 0.3,
+    },
     "steel-ball-label-clockwise": {
         "ball_colour": (170, 172, 178), "ball_finish": "specular", "label_radius": 0.3,
         "mark_colour": (240, 220, 40), "clockwise": True,
@@ -467,8 +473,9 @@ SLOW_SCENES = {"phone-lens-shutter-flicker", "red-ball-grey-platter-tape", "red-
     ],
 )
 def test_scenes_a_person_films_are_tracked(fields, tmp_path) -> None:
-    """A coloured, dark, specular or green ball, a strip of tape or a dark mark, a shadow, a
-    label, a phone's lens and shutter: tracked to within 0.05 R, Omega within 0.5 %."""
+    """A coloured, dark, specular or green ball, a strip of tape or a dark mark, a shadow (on
+    a label the ball touches, too), a label, a phone's lens and shutter: tracked to within
+    0.05 R, Omega within 0.5 %."""
     path = tmp_path / "scene_SYNTHETIC.mp4"
     scene = SCENE._replace(**fields)
     truth = render_video(path, "slipping", 2.0, STATE0, SETUP, scene, seed=11)

@@ -43,6 +43,27 @@ def test_a_grey_platter_on_a_table_of_its_lightness_is_found_by_colour() -> None
     assert abs(platter.rim.b - axes[1]) < 0.3
 
 
+def test_a_thick_platter_s_side_is_not_taken_for_its_rim() -> None:
+    """A dark platter whose side (or its shadow on the table), a brown band 12 px deep below
+    its top, is found with it: the rim is the top's edge, to a fraction of a pixel."""
+    centre, axes, depth = (320.4, 170.6), (250.0, 150.0), 12.0
+    n = 8
+    big = np.zeros((360 * n, 640 * n, 3), np.uint8)
+    big[:] = (145, 120, 92)
+    size = (round(axes[0] * n), round(axes[1] * n))
+    for d in np.arange(0.0, depth + 0.5 / n, 1.0 / n):  # the side: the top swept down
+        at = (round(centre[0] * n + 3.5), round((centre[1] + d) * n + 3.5))
+        cv2.ellipse(big, at, size, 0, 0, 360, (67, 56, 41), -1)
+    at = (round(centre[0] * n + 3.5), round(centre[1] * n + 3.5))
+    cv2.ellipse(big, at, size, 0, 0, 360, (40, 38, 46), -1)
+    img = cv2.resize(big, (640, 360), interpolation=cv2.INTER_AREA).astype(float)
+    img += np.random.default_rng(0).normal(0.0, 3.0, img.shape[:2])[..., None]  # sensor noise
+    platter, _ = find_platter(_lab(np.clip(img + 0.5, 0, 255).astype(np.uint8)))
+    assert np.hypot(*(np.array(platter.rim.centre) - centre)) < 0.3
+    assert abs(platter.rim.a - axes[0]) < 0.3
+    assert abs(platter.rim.b - axes[1]) < 0.3
+
+
 def _ball(shadow: float, limb: float, centre=(40.3, 38.7), radius=12.0) -> np.ndarray:
     """A share image: a ball of share 1 (its limb on the +u side fading to ``limb``) and a
     shadow of share ``shadow`` beside it on the -u side, anti-aliased by supersampling."""

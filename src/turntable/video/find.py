@@ -29,7 +29,7 @@ from turntable.video.blobs import Colour
 from turntable.video.camera import Pose
 from turntable.video.decode import Picture, VideoError, lab, window
 from turntable.video.platter import Platter
-from turntable.video.regions import MIN_CONTRAST, Candidate, _candidate, _parts, _seeded
+from turntable.video.regions import MIN_CONTRAST, Candidate, _candidate, _parts, _seeded, _split
 
 #: A candidate differs from the platter by this many times the platter's median distance
 #: from its own colour, and by at least ``MIN_CONTRAST`` (CIELAB units).
@@ -47,6 +47,15 @@ AREA_RANGE, MAX_ELONGATION = (0.35, 2.8), 2.0
 #: at least this share of its convex hull.  A ball's shaded limb and its shadow alone, its lit
 #: side of the platter's colour, make a crescent that covers 0.5-0.75.
 MIN_SOLIDITY = 0.8
+#: A ball's region covers at least this share of its outline's inside: a highlight is a small
+#: hole in it (0.94-1.00 on the balls of the benchmark's scenes).  The thin ring of a label's
+#: edge, split from the label by colour, covers less than a tenth of the label; a steel ball
+#: on a light grey platter, its lit side of the platter's grey, leaves its shaded limb as a
+#: ring that covers 0.58 (a ball of nearly the platter's colour, which the guide rules out).
+MIN_FILL = 0.8
+#: A candidate not of a ball's shape (a black ball and its shadow on a light platter, cut as
+#: one region) is split by colour into this many clusters, each part a candidate too.
+RESPLIT_CLUSTERS = 2
 #: A seed's region is looked for within this many times the radius of a ball's image there.
 SEED_REACH = 4.0
 #: Rates of a mark seen in two probe frames agree within this share (a mark seeded where it
@@ -229,13 +238,26 @@ def _look(picture: Picture, platter: Platter, pose: Pose, ball_radius: float):
 
 
 def _first_candidates(look: _Look, lab0) -> list[Candidate]:
-    """The candidates of the first frame."""
+    """The candidates of the first frame; of one not of a ball's shape, its parts by colour
+    too (`RESPLIT_CLUSTERS`): a ball cut as one region with its shadow is one of them."""
     out = []
     for sub, part, corner, split in look.parts(lab0):
         c = _candidate(sub, part, look.platter, look.origin + corner)
-        if c is not None:
-            out.append(c._replace(split=split))
+        if c is None:
+            continue
+        out.append(c._replace(split=split))
+        if _ball_shaped(c):
+            continue
+        for piece in _split(sub, part, RESPLIT_CLUSTERS):
+            p = _candidate(sub, piece, look.platter, look.origin + corner)
+            if p is not None:
+                out.append(p._replace(split=True))
     return out
+
+
+def _ball_shaped(c: Candidate) -> bool:
+    """Round and whole as a ball's image is (`MAX_ELONGATION`, `MIN_SOLIDITY`, `MIN_FILL`)."""
+    return c.elongation < MAX_ELONGATION and c.solidity >= MIN_SOLIDITY and c.fill >= MIN_FILL
 
 
 def _at_seed(option, at, look: _Look, lab0, pose, ball_radius, paths) -> Candidate:
@@ -398,8 +420,7 @@ def _choose_ball(others, pose, ball_radius) -> int | None:
         for i, c in enumerate(others)
         if c is not None
         and AREA_RANGE[0] < c.area / _area_at(pose, (c.u, c.v), ball_radius) < AREA_RANGE[1]
-        and c.elongation < MAX_ELONGATION
-        and c.solidity >= MIN_SOLIDITY
+        and _ball_shaped(c)
     ]
     if not ok:
         return None

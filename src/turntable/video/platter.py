@@ -7,6 +7,11 @@ of another hue is found as well as a dark one on a light table), connected compo
 rim is then refined to a fraction of a pixel: the crossing, along each normal of the ellipse,
 of the half-way level between the platter and its surroundings, measured along the line
 between their colours.
+
+A thick platter, or one that stands on a table its shadow darkens, may be found together with
+its side or its shadow, a band of another colour beyond its top along part of the rim.  The
+top's edge is then where the colour first leaves the platter's going out along each normal
+(`top_edge`).
 """
 
 from __future__ import annotations
@@ -39,6 +44,20 @@ RIM_ROUNDS, RIM_SPREADS, RIM_FLOOR, MIN_RIM_POINTS = 3, 4.0, 0.05, 20
 #: On later frames, the rim's points within this (px) of the rim (the ball or the mark at the
 #: rim left out).
 RIM_AGAIN_PX = 1.5
+#: The rim is looked for along its normals, sampled every ``STEP_PX`` px, within ``REACH_PX``
+#: px of the ellipse it is refined about.
+STEP_PX, REACH_PX = 0.25, 6.0
+#: The top's edge, going out along a normal from ``SIDE_REACH`` of b inside the outline: where
+#: the colour first differs from the platter's by ``SIDE_CONTRAST`` (CIELAB units) and
+#: ``SIDE_GRAIN`` times the platter's grain (its median distance from its own colour), at
+#: least; it lies where the distance crosses half-way between its values ``SIDE_PLATEAU_PX`` px
+#: either side (the platter's grain on one, the side's colour on the other).  A
+#: band lies between the top and the outline where the edge is more than ``SIDE_PX`` px
+#: inside the outline on ``SIDE_SHARE`` of the normals at least: the ball or the mark at
+#: the rim cover no more than a few of them; a thick platter's side and its shadow cover a
+#: third of them or more.
+SIDE_REACH, SIDE_CONTRAST, SIDE_GRAIN, SIDE_PLATEAU_PX = 0.1, 10.0, 5.0, 3.0
+SIDE_PX, SIDE_SHARE = 3.0, 0.15
 
 
 class Ellipse(NamedTuple):
@@ -142,12 +161,11 @@ def platter_colours(lab: NDArray[np.float32], rim: Ellipse) -> Platter:
     )
 
 
-def rim_points(
-    level: NDArray[np.float32], rim: Ellipse, n: int = 360, reach: float = 6.0
-) -> NDArray[np.float64]:
-    """Points of the rim to a fraction of a pixel: where ``level`` (0 outside, 1 on the
-    platter) crosses 1/2 along the normal of ``rim`` at ``n`` angles (the crossing nearest the
-    ellipse)."""
+def _along_normals(
+    img: NDArray[np.float32], rim: Ellipse, n: int, steps: NDArray[np.float64]
+) -> tuple[NDArray[np.float64], NDArray[np.float32]]:
+    """The points ``steps`` px along the normal of ``rim`` at ``n`` angles (n, steps, 2), and
+    ``img``, smoothed over a pixel, sampled at them (n, steps)."""
     s = np.linspace(0, 2 * math.pi, n, endpoint=False)
     c, si = math.cos(rim.angle), math.sin(rim.angle)
     u1, u2 = np.array([c, si]), np.array([-si, c])
@@ -156,16 +174,27 @@ def rim_points(
     )
     normal = (rim.b * np.cos(s))[:, None] * u1 + (rim.a * np.sin(s))[:, None] * u2
     normal /= np.linalg.norm(normal, axis=1, keepdims=True)
-    steps = np.arange(-reach, reach + 1e-9, 0.25)
     pts = on[:, None, :] + steps[None, :, None] * normal[:, None, :]
-    smooth = cv2.GaussianBlur(level, (0, 0), 1.0)
+    smooth = cv2.GaussianBlur(img, (0, 0), 1.0)
     prof = cv2.remap(
         smooth,
         pts[..., 0].astype(np.float32),
         pts[..., 1].astype(np.float32),
         cv2.INTER_LINEAR,
         borderMode=cv2.BORDER_REPLICATE,
-    ) - np.float32(0.5)
+    )
+    return pts, prof
+
+
+def rim_points(
+    level: NDArray[np.float32], rim: Ellipse, n: int = 360, reach: float = REACH_PX
+) -> NDArray[np.float64]:
+    """Points of the rim to a fraction of a pixel: where ``level`` (0 outside, 1 on the
+    platter) crosses 1/2 along the normal of ``rim`` at ``n`` angles (the crossing nearest the
+    ellipse)."""
+    steps = np.arange(-reach, reach + 1e-9, STEP_PX)
+    pts, prof = _along_normals(level, rim, n, steps)
+    prof = prof - np.float32(0.5)
     out = []
     centre = len(steps) // 2
     for k in range(n):
@@ -193,6 +222,56 @@ def refine_rim(level: NDArray[np.float32], rim: Ellipse) -> tuple[Ellipse, NDArr
     return rim, pts
 
 
+def top_edge(lab: NDArray[np.float32], platter: Platter) -> tuple[Ellipse, NDArray] | None:
+    """The top's rim where a band of another colour (a thick platter's side, its shadow on
+    the table) lies between it and the outline ``platter.rim`` (`SIDE_PX`, `SIDE_SHARE`):
+    fitted to the points where the colour first leaves the platter's going out along each
+    normal, outliers left out as in `refine_rim`; None where there is no band."""
+    distance = np.linalg.norm(lab - platter.colour.astype(np.float32), axis=-1)
+    rim = platter.rim
+    inner = rim.mask(distance.shape, PLATTER_RING[1]) & ~rim.mask(distance.shape, PLATTER_RING[0])
+    grain = float(np.median(distance[inner]))
+    level = max(SIDE_CONTRAST, SIDE_GRAIN * grain)
+    pts, depth = _first_departures(distance, rim, level, SIDE_REACH * rim.b)
+    if len(pts) < MIN_RIM_POINTS or np.mean(depth < -SIDE_PX) < SIDE_SHARE:
+        return None
+    for _ in range(RIM_ROUNDS):
+        rim = fit_ellipse(pts)
+        dev = (rim.radius(pts) - 1.0) * rim.b
+        pts = pts[inliers(dev, RIM_SPREADS, RIM_FLOOR)]
+        if len(pts) < MIN_RIM_POINTS:
+            return None
+    return fit_ellipse(pts), pts
+
+
+def _first_departures(distance, rim: Ellipse, level: float, reach_in: float, n: int = 360):
+    """Where, going out along the normal of ``rim`` at ``n`` angles from ``reach_in`` px
+    inside it, the colour's ``distance`` from the platter's first passes ``level``: the
+    crossing, nearest that point, of the half-way level between its values `SIDE_PLATEAU_PX`
+    either side (px), and how far it lies from ``rim`` (px, negative inside)."""
+    steps = np.arange(-reach_in, REACH_PX + 1e-9, STEP_PX)
+    pts, prof = _along_normals(distance.astype(np.float32), rim, n, steps)
+    beyond = int(SIDE_PLATEAU_PX / STEP_PX)
+    out, depth = [], []
+    for k in range(n):
+        p = prof[k]
+        above = np.flatnonzero(p > level)
+        if above.size == 0:
+            continue
+        j = int(above[0])
+        half = 0.5 * (p[max(j - beyond, 0)] + p[min(j + beyond, p.size - 1)])
+        while j > 0 and p[j - 1] > half:  # back down to the half-way crossing
+            j -= 1
+        while j < p.size - 1 and p[j] < half:  # or on up to it
+            j += 1
+        if j == 0:
+            continue
+        frac = (half - p[j - 1]) / max(p[j] - p[j - 1], 1e-6)
+        out.append(pts[k, j - 1] + frac * (pts[k, j] - pts[k, j - 1]))
+        depth.append(steps[j - 1] + frac * STEP_PX)
+    return np.array(out).reshape(-1, 2), np.array(depth)
+
+
 def rim_points_again(level: NDArray[np.float32], rim: Ellipse) -> NDArray[np.float64]:
     """The rim's points on a later frame, those within 1.5 px of ``rim`` (the ball or the
     mark at the rim left out)."""
@@ -209,4 +288,7 @@ def find_platter(lab: NDArray[np.float32]) -> tuple[Platter, NDArray[np.float64]
     if platter.contrast < 1e-6:
         return None
     rim, pts = refine_rim(platter.level(lab), rim0)
+    top = top_edge(lab, platter._replace(rim=rim))
+    if top is not None:  # a thick platter's side, or its shadow: the top's edge is the rim
+        rim, pts = top
     return platter._replace(rim=rim), pts

@@ -40,6 +40,8 @@ class Candidate(NamedTuple):
     elongation: float
     #: the share of its convex hull that it covers, its holes filled
     solidity: float = 1.0
+    #: the share of its outline's inside that it covers (a ring about a label covers little)
+    fill: float = 1.0
     #: distance from the axis in units of P if it turns rigidly with the platter, else nan
     turns_at: float = math.nan
     #: a part of a larger region, split from it by colour
@@ -95,28 +97,31 @@ def _candidate(lab_img, region, platter: Platter, origin) -> Candidate | None:
     )
 
 
-def _split(lab_img, region) -> list[NDArray[np.uint8]]:
-    """A region larger than any ball (a ball touching a label, say) split by colour: three
-    k-means clusters of its CIELAB colours, each cut into its connected parts."""
+def _split(lab_img, region, clusters: int = 3) -> list[NDArray[np.uint8]]:
+    """A region larger than any ball (a ball touching a label, say) split by colour:
+    ``clusters`` k-means clusters of its CIELAB colours, each cut into its connected parts."""
     pix = lab_img[region.astype(bool)].astype(np.float32)
+    if len(pix) < clusters:
+        return []
     criteria = (cv2.TERM_CRITERIA_EPS + cv2.TERM_CRITERIA_MAX_ITER, 20, 0.5)
     cv2.setRNGSeed(0)
-    _, which, _ = cv2.kmeans(pix, 3, None, criteria, 2, cv2.KMEANS_PP_CENTERS)
+    _, which, _ = cv2.kmeans(pix, clusters, None, criteria, 2, cv2.KMEANS_PP_CENTERS)
     cluster = np.full(region.shape, -1, np.int32)
     cluster[region.astype(bool)] = which.ravel()
     parts = []
-    for k in range(3):
+    for k in range(clusters):
         n, labels = cv2.connectedComponents((cluster == k).astype(np.uint8), connectivity=8)
         parts += [(labels == i).astype(np.uint8) for i in range(1, n)]
     return parts
 
 
-def _shape(region: NDArray[np.uint8]) -> tuple[float, float]:
-    """Axis ratio of a region, from its second moments, and its solidity (the share of its
-    convex hull it covers, its holes filled: `turntable.video.find.MIN_SOLIDITY`)."""
+def _shape(region: NDArray[np.uint8]) -> tuple[float, float, float]:
+    """Axis ratio of a region, from its second moments, its solidity (the share of its
+    convex hull it covers, its holes filled: `turntable.video.find.MIN_SOLIDITY`) and the
+    share of its outline's inside it covers (`turntable.video.find.MIN_FILL`)."""
     m = cv2.moments(region, binaryImage=True)
     if m["m00"] < 3:
-        return 1.0, 1.0
+        return 1.0, 1.0, 1.0
     a, b, c = m["mu20"] / m["m00"], m["mu11"] / m["m00"], m["mu02"] / m["m00"]
     root = math.sqrt(max((a - c) ** 2 + 4 * b * b, 0.0))
     lo, hi = (a + c - root) / 2, (a + c + root) / 2
@@ -124,7 +129,8 @@ def _shape(region: NDArray[np.uint8]) -> tuple[float, float]:
     filled = sum(cv2.contourArea(k) + 0.5 * cv2.arcLength(k, True) for k in contours)
     hull = cv2.convexHull(np.concatenate(contours))
     solidity = filled / max(cv2.contourArea(hull) + 0.5 * cv2.arcLength(hull, True), 1.0)
-    return math.sqrt(hi / max(lo, 1e-9)), min(solidity, 1.0)
+    fill = m["m00"] / max(filled, 1.0)
+    return math.sqrt(hi / max(lo, 1e-9)), min(solidity, 1.0), min(fill, 1.0)
 
 
 def _seeded(lab_img, origin, platter: Platter, at, reach: float) -> Candidate | None:

@@ -101,7 +101,7 @@ numpydoc_xref_aliases = {
 # Words of the types that name no object, and the video's internal types (not on the site).
 numpydoc_xref_ignore = {
     *("of", "or", "optional", "default", "shape", "each", "and", "a", "the", "low", "high"),
-    *("Calibration", "Candidate", "Ellipse", "Seed", "VideoError", "VideoInfo"),
+    *("Calibration", "Candidate", "Ellipse", "InputError", "Seed", "VideoError", "VideoInfo"),
 }
 
 # The examples of the pages run when the site is built (``{plot}``), shown with their code.

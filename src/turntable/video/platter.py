@@ -11,7 +11,7 @@ between their colours.
 A thick platter, or one that stands on a table its shadow darkens, may be found together with
 its side or its shadow, a band of another colour beyond its top along part of the rim.  The
 top's edge is then where the colour first leaves the platter's going out along each normal
-(`top_edge`).
+(``top_edge``).
 """
 
 from __future__ import annotations

@@ -2,7 +2,7 @@
 
 Beside the film (``-o FILM.csv``: t, x, y), ``turntable track`` writes FILM.json: the
 calibration as a person reads it, and under ``"saved"`` what a fit needs to carry the camera's
-uncertainty into the coefficient (`turntable.video.uncertainty`): the calibration's
+uncertainty into the coefficient (``turntable.video.uncertainty``): the calibration's
 parameters and their covariance, the ball's image on every frame and the tracking's warnings
 (`saved_json`).  ``turntable fit FILM.csv`` then fits the track as ``turntable fit VIDEO``
 fits the video, without tracking it again.
@@ -98,9 +98,9 @@ def _calibration(doc: dict[str, Any], size: tuple[int, int]) -> Calibration:
 
 
 def read_track(path: str | Path) -> tuple[Track, list[str], float | None]:
-    """The `Track` of a film written by ``turntable track`` (its positions, times and
-    calibration; without the video's pictures), the tracking's warnings and the ``--rpm`` it
-    was given (None if none).
+    """The `~turntable.video.track.Track` of a film written by ``turntable track`` (its
+    positions, times and calibration; without the video's pictures), the tracking's warnings
+    and the ``--rpm`` it was given (None if none).
 
     Raises
     ------

@@ -19,7 +19,8 @@ from pathlib import Path
 
 import pytest
 
-from turntable import _terminal, cli
+from cli_here import run_here as run_turntable
+from turntable import _terminal
 from turntable.film import EXAMPLE_FILM
 from turntable.fitting import InputError, fit_file
 
@@ -30,12 +31,8 @@ SHORT = "t,x,y\n0,0.05,0\n0.1,0.049,0.016\n0.2,0.046,0.031\n0.3,0.041,0.045\n0.4
 
 
 def run_here(capsys: pytest.CaptureFixture[str], *args: str) -> tuple[int, str, str]:
-    try:
-        code = cli.main(list(args))
-    except SystemExit as exc:
-        code = exc.code
-    out, err = capsys.readouterr()
-    return code, out, err
+    res = run_turntable(capsys, *args)
+    return res.returncode, res.stdout, res.stderr
 
 
 @pytest.fixture

@@ -15,6 +15,7 @@ import pytest
 
 import turntable as tt
 from ci_build import full_config
+from cli_here import run_here as run_turntable
 from turntable import cli, film, fit
 from turntable._json import finite_or_none
 from turntable.fit import plot as fitplot
@@ -40,13 +41,8 @@ def run(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess:
 
 
 def run_here(capsys: pytest.CaptureFixture[str], *args: str) -> subprocess.CompletedProcess:
-    """``turntable fit ARGS`` in this process (`turntable.cli.main`), same result as `run`."""
-    try:
-        code = cli.main(["fit", *args])
-    except SystemExit as exc:
-        code = exc.code
-    out, err = capsys.readouterr()
-    return subprocess.CompletedProcess(args, code, out, err)
+    """``turntable fit ARGS`` in this process, same result as `run`."""
+    return run_turntable(capsys, "fit", *args)
 
 
 # --------------------------------------------------------------------------- an unseen film

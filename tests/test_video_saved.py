@@ -6,7 +6,6 @@ a ball radius other than the tracked one, is refused with one line. On a small S
 from __future__ import annotations
 
 import json
-import subprocess
 from pathlib import Path
 
 import pytest
@@ -14,6 +13,7 @@ import pytest
 pytest.importorskip("av")
 pytest.importorskip("cv2")
 
+from cli_here import run_here
 from turntable import cli, film
 from turntable.video.render import Scene, render_video
 
@@ -29,15 +29,6 @@ SCENE = Scene(
     clockwise=True,
 )
 FIT = ["--radius", str(RADIUS), "--k", "0.4"]
-
-
-def run_here(capsys: pytest.CaptureFixture[str], *args: str) -> subprocess.CompletedProcess:
-    try:
-        code = cli.main(list(args))
-    except SystemExit as exc:
-        code = exc.code
-    out, err = capsys.readouterr()
-    return subprocess.CompletedProcess(args, code, out, err)
 
 
 @pytest.fixture(scope="module")

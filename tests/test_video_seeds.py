@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import json
 import math
-import subprocess
 from pathlib import Path
 
 import numpy as np
@@ -15,7 +14,8 @@ import pytest
 pytest.importorskip("av")
 pytest.importorskip("cv2")
 
-from turntable import cli, film
+from cli_here import run_here
+from turntable import film
 from turntable.video import camera
 from turntable.video.check import first_failure
 from turntable.video.decode import Video, VideoError, rgb, write_video
@@ -29,16 +29,6 @@ SCENE = Scene(tilt_deg=25.0, roll_deg=4.0, size=(320, 180), fps=30.0, duration=1
 #: The mark is drawn on none of these frames (0.67 s, longer than a gap can be).
 HIDDEN = tuple(range(15, 35))
 TRACK = ["--ball-radius", str(RADIUS), "--platter-radius", str(PLATTER)]
-
-
-def run_here(capsys: pytest.CaptureFixture[str], *args: str) -> subprocess.CompletedProcess:
-    """``turntable ARGS`` in this process, as exit status, stdout, stderr."""
-    try:
-        code = cli.main(list(args))
-    except SystemExit as exc:
-        code = exc.code
-    out, err = capsys.readouterr()
-    return subprocess.CompletedProcess(args, code, out, err)
 
 
 def mark_pixel(truth, frame: int) -> str:

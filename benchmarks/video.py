@@ -332,6 +332,8 @@ def measure(truth: dict[str, Any], path: Path, truth_file: Path) -> dict[str, An
         "stderr": own.stderr,
         "stderr_statistical": stat,
         "stderr_calibration": parts[truth["model"]][f"{name}_stderr_calibration"],
+        "stderr_tracker": parts[truth["model"]][f"{name}_stderr_tracker"],
+        "at_bound": own.bound is not None,
         "lens_measured": cal.lens.measured,
         "z": z,
         "z_statistical": float((own.coefficient - c) / stat),

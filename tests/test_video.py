@@ -6,7 +6,6 @@ from __future__ import annotations
 import itertools
 import json
 import math
-import subprocess
 from pathlib import Path
 
 import numpy as np
@@ -15,7 +14,8 @@ import pytest
 pytest.importorskip("av")
 pytest.importorskip("cv2")
 
-from turntable import cli, film
+from cli_here import run_here
+from turntable import film
 from turntable.video import camera
 from turntable.video.render import Scene, render_video
 from turntable.video.track import track_video
@@ -36,16 +36,6 @@ def position_errors(track, truth) -> np.ndarray:
     x = CubicSpline(truth.film.t, truth.film.x)(t)
     y = CubicSpline(truth.film.t, truth.film.y)(t)
     return np.hypot(track.film.x - x, track.film.y - y)
-
-
-def run_here(capsys: pytest.CaptureFixture[str], *args: str) -> subprocess.CompletedProcess:
-    """``turntable ARGS`` in this process, as exit status, stdout, stderr."""
-    try:
-        code = cli.main(list(args))
-    except SystemExit as exc:
-        code = exc.code
-    out, err = capsys.readouterr()
-    return subprocess.CompletedProcess(args, code, out, err)
 
 
 @pytest.fixture(scope="module")
@@ -537,16 +527,21 @@ def test_scenes_outside_the_guide_are_refused(fields, says, tmp_path, capsys) ->
 
 
 def test_fit_video_reports_both_parts_of_its_standard_error(rendered, capsys) -> None:
-    """The coefficient's standard error is the statistical one and the calibration's added
-    in quadrature, both reported; FILM.json says whether the lens's k1 is measured."""
+    """The coefficient's standard error is the statistical one, the calibration's and the
+    tracker's added in quadrature, all reported; FILM.json says whether the lens's k1 is
+    measured."""
     path, _, track, _ = rendered
     res = run_here(capsys, "fit", str(path), "--radius", "0.008", "--platter-radius", "0.15")
     assert res.returncode == 0, res.stderr
     out = json.loads(res.stdout)
     parts = out["video"]["stderr_parts"]["slipping"]
-    total = math.hypot(parts["mu0_stderr_statistical"], parts["mu0_stderr_calibration"])
+    total = math.hypot(
+        parts["mu0_stderr_statistical"], parts["mu0_stderr_calibration"],
+        parts["mu0_stderr_tracker"],
+    )  # fmt: skip
     assert out["slipping"]["mu0_stderr"] == pytest.approx(total, rel=1e-9)
     assert parts["mu0_stderr_calibration"] > 0
+    assert parts["mu0_stderr_tracker"] > 0
     assert set(parts["calibration_parts_relative"]) >= {"tilt", "focal_length", "lens_k1"}
     lens = out["video"]["lens"]
     assert lens["k1_measured"] == track.calibration.lens.measured

@@ -1,7 +1,8 @@
 """How a fit's coefficient follows a change of its film: the linear response of the
 least-squares estimate, (J^T J)^-1 J^T (change of the residuals), by one Gauss-Newton step
-from the fit (`coefficient_response`); a camera's calibration is carried into a coefficient's
-standard error with it (`turntable.video.uncertainty`).
+from the fit (`coefficient_response`), or as the weight of each position
+(`coefficient_influence`); a camera's calibration and a tracker's smooth error are carried
+into a coefficient's standard error with them (`turntable.video.uncertainty`).
 """
 
 from __future__ import annotations
@@ -59,3 +60,28 @@ def coefficient_response(
 def _gauss_newton_step(fitter: _Fitter, theta: NDArray[np.float64]) -> NDArray[np.float64]:
     """The least-squares step -J^+ r of ``fitter`` from ``theta``."""
     return np.linalg.lstsq(fitter.jacobian(theta), -fitter.residuals(theta), rcond=None)[0]
+
+
+def coefficient_influence(
+    film: Film, setup: Setup, model: str, *, fit_omega: bool = False, fit_axis: bool = False
+) -> NDArray[np.float64]:
+    """Return d ln c / d(x_i, y_i) of the fit (1/m, shape (n, 2)): how ln c moves, to first
+    order, when the film's positions move by small amounts.
+
+    The row of ln c in the pseudo-inverse J^+ of the residuals' Jacobian (m) at the fit: a
+    move dxy of the positions moves ln c by sum(influence * dxy), as `coefficient_response`
+    finds for the film so moved.
+
+    Parameters
+    ----------
+    film : Film
+    setup : Setup
+    model : str
+    fit_omega, fit_axis : bool
+        As in `fit_model`.
+    """
+    lay = _layout(model, fit_omega, fit_axis)
+    setup = check_setup(setup)
+    fitter, _, theta, _ = _least_squares(film, setup, lay)
+    row = np.linalg.pinv(fitter.jacobian(theta))[lay.i_c]
+    return row.reshape(-1, 2)

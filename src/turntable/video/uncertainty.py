@@ -1,4 +1,5 @@
-"""The camera's uncertainty carried into the friction coefficient of a tracked video.
+"""The camera's uncertainty and the tracker's smooth error carried into the friction
+coefficient of a tracked video.
 
 The film of a video is measured through its calibration (`turntable.video.calibrate`): the
 camera's focal length, tilt, roll, look-at point and distance (the scale), the lens's k1,
@@ -7,9 +8,18 @@ of the calibration.  A fit's standard error sees only the scatter of the positio
 model; an error of the camera moves every position alike and is not in it.  The coefficient's
 part from the calibration is propagated linearly: G_j = d ln c / d theta_j, by central
 differences of the film made with the calibration's parameter j moved by +-1 of its standard
-errors (`turntable.fit.response.coefficient_response`), and se_cal(ln c) = sqrt(G C G^T).  The
-coefficient's standard error is then sqrt(se_stat^2 + se_cal^2); where se_cal exceeds se_stat
-(`DOMINANT`), the calibration limits the measurement, and the output says so.
+errors (`turntable.fit.response.coefficient_response`), and se_cal(ln c) = sqrt(G C G^T).
+
+The tracker's positions also carry an error that changes smoothly with where the ball is on
+the platter (its shading, its outline against what lies behind it).  A fit absorbs most of
+it, so the residuals do not show it, yet it can move a coefficient that the film pins down
+poorly.  It is taken as a Gaussian random field on the platter, of each coordinate alike:
+rms `TRACKER_ERROR` ball radii, correlation length `TRACKER_LENGTH` platter radii, so
+se_track(ln c) = sqrt(sum_ij g_i . g_j K_ij), g_i = d ln c / d(x_i, y_i)
+(`turntable.fit.response.coefficient_influence`), K_ij = (TRACKER_ERROR R)^2
+exp(-|p_i - p_j|^2 / (2 (TRACKER_LENGTH P)^2)).  The coefficient's standard error is
+sqrt(se_stat^2 + se_cal^2 + se_track^2); where a systematic part exceeds se_stat
+(`DOMINANT`), it limits the measurement, and the output says so.
 """
 
 from __future__ import annotations
@@ -22,14 +32,30 @@ from numpy.typing import NDArray
 
 from turntable.film import Film, Setup
 from turntable.fit import COEFFICIENT, FilmFit, ModelFit
-from turntable.fit.response import coefficient_response
+from turntable.fit.response import coefficient_influence, coefficient_response
 from turntable.video import camera
 from turntable.video.calibrate import _At, camera_of
 
-__all__ = ["DOMINANT", "LENS_WARNING_R", "CalibrationPart", "calibration_parts", "lens_note"]
+__all__ = [
+    "DOMINANT",
+    "LENS_WARNING_R",
+    "TRACKER_ERROR",
+    "TRACKER_LENGTH",
+    "CalibrationPart",
+    "calibration_parts",
+    "lens_note",
+    "tracker_part",
+]
 
-#: The calibration's part dominates where it is more than this times the statistical one.
+#: A systematic part dominates where it is more than this times the statistical one.
 DOMINANT = 1.0
+#: The tracker's smooth error: rms (ball radii) and correlation length (platter radii).  The
+#: rms is the upper 90 % limit that the coefficients of 73 rendered videos allow
+#: (``benchmarks/tracker_error.py``; its most likely value 0.0011); the length is where the
+#: least rms explains them.
+TRACKER_ERROR, TRACKER_LENGTH = 0.0018, 0.1
+#: Frames of the tracker's covariance computed at once (memory: this times the frames).
+_CHUNK = 256
 #: A lens whose k1 is not measured is named in the warnings where its uncertainty moves the
 #: positions by more than this (ball radii).
 LENS_WARNING_R = 0.01
@@ -131,40 +157,75 @@ def calibration_parts(
     return CalibrationPart(math.sqrt(max(var, 0.0)), parts)
 
 
-def widened(result: FilmFit, parts: dict[str, CalibrationPart]) -> FilmFit:
-    """The fits with their standard errors sqrt(se_stat^2 + se_cal^2) (``parts`` by model)."""
+def tracker_part(track, influence: NDArray[np.float64]) -> float:
+    """se_track(ln c): the tracker's smooth error carried into ln c (the module's docstring).
+
+    Parameters
+    ----------
+    track : turntable.video.track.Track
+    influence : numpy.ndarray
+        d ln c / d(x_i, y_i) of the fit of ``track.film``, shape (n, 2)
+        (`turntable.fit.response.coefficient_influence`).
+    """
+    from scipy.spatial.distance import cdist
+
+    xy = np.column_stack([track.film.x, track.film.y])
+    scale = -0.5 / (TRACKER_LENGTH * track.platter_radius) ** 2
+    var = 0.0
+    for i in range(0, len(xy), _CHUNK):
+        kernel = np.exp(scale * cdist(xy[i : i + _CHUNK], xy, "sqeuclidean"))
+        var += float(np.sum(influence[i : i + _CHUNK] * (kernel @ influence)))
+    return TRACKER_ERROR * track.ball_radius * math.sqrt(max(var, 0.0))
+
+
+def widened(
+    result: FilmFit, parts: dict[str, CalibrationPart], tracker: dict[str, float]
+) -> FilmFit:
+    """The fits with their standard errors sqrt(se_stat^2 + se_cal^2 + se_track^2) (``parts``
+    and ``tracker`` by model)."""
     fits: dict[str, ModelFit] = {}
     for model, f in result.fits.items():
-        cal = parts[model].stderr
-        log_se = math.hypot(f.log_stderr, cal)
+        log_se = math.sqrt(f.log_stderr**2 + parts[model].stderr ** 2 + tracker[model] ** 2)
         fits[model] = f._replace(log_stderr=log_se, stderr=f.coefficient * log_se)
     return result._replace(fits=fits)
 
 
-def summary(statistical: FilmFit, parts: dict[str, CalibrationPart]) -> dict[str, dict]:
-    """Both parts of each coefficient's standard error, and which dominates."""
+def summary(
+    statistical: FilmFit, parts: dict[str, CalibrationPart], tracker: dict[str, float]
+) -> dict[str, dict]:
+    """The three parts of each coefficient's standard error, and which dominates."""
     out = {}
     for model, f in statistical.fits.items():
-        p = parts[model]
+        p, name = parts[model], COEFFICIENT[model]
         out[model] = {
-            f"{COEFFICIENT[model]}_stderr_statistical": f.stderr,
-            f"{COEFFICIENT[model]}_stderr_calibration": f.coefficient * p.stderr,
+            f"{name}_stderr_statistical": f.stderr,
+            f"{name}_stderr_calibration": f.coefficient * p.stderr,
+            f"{name}_stderr_tracker": f.coefficient * tracker[model],
             "calibration_dominates": bool(p.stderr > DOMINANT * f.log_stderr),
+            "tracker_dominates": bool(tracker[model] > DOMINANT * f.log_stderr),
             "calibration_parts_relative": p.parts,
         }
     return out
 
 
-def dominance_warning(model: str, f: ModelFit, p: CalibrationPart) -> str | None:
-    """One line where the calibration's part of ``model``'s standard error dominates."""
-    if f.bound is not None or not p.stderr > DOMINANT * f.log_stderr:
+def dominance_warning(
+    model: str, f: ModelFit, p: CalibrationPart, tracker: float = 0.0
+) -> str | None:
+    """One line where the larger systematic part of ``model``'s standard error, the
+    calibration's or the tracker's (relative), dominates the statistical one."""
+    largest = max(p.stderr, tracker)
+    if f.bound is not None or not largest > DOMINANT * f.log_stderr:
         return None
     name = COEFFICIENT[model]
+    what = (
+        f"the camera's calibration (largest part: {p.largest.replace('_', ' ')})"
+        if p.stderr >= tracker
+        else "the tracker's smooth error of the positions (where on the platter the ball is)"
+    )
     return (
-        f"the camera's calibration dominates the uncertainty of {name} ({model}): +-"
-        f"{f.coefficient * p.stderr:.2g} from the calibration (largest part: "
-        f"{p.largest.replace('_', ' ')}) against +-{f.stderr:.2g} from the scatter of the "
-        "positions; the standard error reported is both added in quadrature"
+        f"{what} dominates the uncertainty of {name} ({model}): +-"
+        f"{f.coefficient * largest:.2g} from it against +-{f.stderr:.2g} from the scatter of "
+        "the positions; the standard error reported adds all parts in quadrature"
     )
 
 
@@ -197,8 +258,9 @@ def lens_note(track) -> str | None:
 def carry(
     track, setup: Setup, result: FilmFit, *, omega_measured: bool, fit_omega: bool, fit_axis: bool
 ) -> tuple[FilmFit, dict[str, dict], list[str]]:
-    """The fits of a tracked video with the calibration's uncertainty carried into their
-    standard errors; both parts by model; the warnings where the calibration dominates.
+    """The fits of a tracked video with the calibration's uncertainty and the tracker's
+    smooth error carried into their standard errors; the parts by model; the warnings where
+    a systematic part dominates.
 
     Parameters
     ----------
@@ -211,5 +273,10 @@ def carry(
     """
     options = {"omega_measured": omega_measured, "fit_omega": fit_omega, "fit_axis": fit_axis}
     parts = {m: calibration_parts(track, setup, m, **options) for m in result.fits}
-    notes = [dominance_warning(m, f, parts[m]) for m, f in result.fits.items()]
-    return widened(result, parts), summary(result, parts), [n for n in notes if n]
+    fit_options = {"fit_omega": fit_omega, "fit_axis": fit_axis}
+    tracker = {
+        m: tracker_part(track, coefficient_influence(track.film, setup, m, **fit_options))
+        for m in result.fits
+    }
+    notes = [dominance_warning(m, f, parts[m], tracker[m]) for m, f in result.fits.items()]
+    return widened(result, parts, tracker), summary(result, parts, tracker), [n for n in notes if n]

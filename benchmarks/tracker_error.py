@@ -1,0 +1,93 @@
+"""The size of the tracker's smooth error (`turntable.video.uncertainty.TRACKER_ERROR`),
+estimated from the benchmark's videos, and the coverage it gives.
+
+Each tracked video i of ``benchmarks/video.py`` and ``benchmarks/unseen.py`` (their rows in
+``results/benchmarks.json``, the coefficient not at a bound) gives d_i = ln(fitted / true),
+its statistical and calibration parts s_i (of ln c) and its tracker's part per unit of the
+field's rms, u_i.  d_i ~ N(0, s_i^2 + sigma^2 u_i^2); sigma is estimated by maximum
+likelihood, with its upper one-sided 90 % limit (the profile of -2 ln L up by 1.28^2).  With
+sigma, the coverage (true coefficient within 2 SE) and the largest |z| are given over all the
+videos, and each video's with sigma estimated without it (leave one out).
+
+Run ``python benchmarks/tracker_error.py`` after both; the result is merged into
+``results/benchmarks.json`` under ``tracker_error``.
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import json
+import math
+
+import numpy as np
+from scipy.optimize import brentq, minimize_scalar
+
+from results_file import ROOT, merge_results
+from turntable.video.uncertainty import TRACKER_ERROR
+
+#: Range of sigma searched, ball radii.
+SIGMA_RANGE = (1e-6, 0.05)
+
+
+def videos(results: dict) -> dict[str, tuple[float, float, float, float]]:
+    """name: (d, s, u, true / fitted) of every tracked video whose coefficient is not at a bound."""
+    rows = {f"{r['family']}_{i}": r for i, r in enumerate(results["video"]["rows"])}
+    rows |= {r["case"]: r for r in results["unseen"]["rows"]}
+    out = {}
+    for name, r in rows.items():
+        if not r["tracked"] or r.get("at_bound", True) or not r["fitted"] > 0:
+            continue
+        stat, cal = r["stderr_statistical"] / r["fitted"], r["stderr_calibration"] / r["fitted"]
+        u = r["stderr_tracker"] / r["fitted"] / TRACKER_ERROR
+        out[name] = (math.log(r["fitted"] / r["coefficient"]), math.hypot(stat, cal), u,
+                     r["coefficient"] / r["fitted"])  # fmt: skip
+    return out
+
+
+def minus_two_log_l(sigma: float, data) -> float:
+    return sum(math.log(s**2 + (sigma * u) ** 2) + d**2 / (s**2 + (sigma * u) ** 2)
+               for d, s, u, _ in data)  # fmt: skip
+
+
+def estimate(data) -> tuple[float, float]:
+    """The maximum-likelihood sigma and its upper one-sided 90 % limit."""
+    lo, hi = (math.log(v) for v in SIGMA_RANGE)
+    best = minimize_scalar(lambda x: minus_two_log_l(math.exp(x), data), bounds=(lo, hi),
+                           method="bounded").x  # fmt: skip
+    level = minus_two_log_l(math.exp(best), data) + 1.2816**2
+    excess = lambda x: minus_two_log_l(math.exp(x), data) - level  # noqa: E731
+    upper = math.exp(brentq(excess, best, hi)) if excess(hi) > 0 else SIGMA_RANGE[1]
+    return math.exp(best), upper
+
+
+def z(video, sigma: float) -> float:
+    """(fitted - true) / SE, as the benchmarks count it."""
+    _, s, u, ratio = video
+    return (1 - ratio) / math.hypot(s, sigma * u)
+
+
+def main() -> None:
+    data = videos(json.loads((ROOT / "results/benchmarks.json").read_text()))
+    sigma, upper = estimate(list(data.values()))
+    inside = np.array([z(v, TRACKER_ERROR) for v in data.values()])
+    alone = {n: z(v, estimate([w for m, w in data.items() if m != n])[0]) for n, v in data.items()}
+    out = np.array(list(alone.values()))
+    res = {
+        "synthetic": True, "videos": len(data), "sigma_ml": sigma, "sigma_upper_90": upper,
+        "tracker_error": TRACKER_ERROR,
+        "coverage_2se": float(np.mean(np.abs(inside) < 2)),
+        "largest_abs_z": float(np.max(np.abs(inside))),
+        "rms_z": float(np.sqrt(np.mean(inside**2))),
+        "coverage_2se_leave_one_out": float(np.mean(np.abs(out) < 2)),
+        "largest_abs_z_leave_one_out": float(np.max(np.abs(out))),
+        "beyond_4se_leave_one_out": sorted(n for n, v in alone.items() if abs(v) > 4),
+    }  # fmt: skip
+    merge_results(ROOT / "results/benchmarks.json", {"tracker_error": res})
+    print(json.dumps(res, indent=1))
+
+
+if __name__ == "__main__":
+    main()

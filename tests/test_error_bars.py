@@ -129,7 +129,7 @@ def test_the_output_says_where_the_calibration_dominates() -> None:
     assert "lens k1" in line
     assert "\n" not in line
     line = dominance_warning("slipping", f, small, tracker=1.5 * f.log_stderr)
-    assert "tracker's smooth error" in line
+    assert "tracker's error" in line
     assert "dominates" in line
 
 

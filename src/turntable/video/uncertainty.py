@@ -220,7 +220,7 @@ def dominance_warning(
     what = (
         f"the camera's calibration (largest part: {p.largest.replace('_', ' ')})"
         if p.stderr >= tracker
-        else "the tracker's smooth error of the positions (where on the platter the ball is)"
+        else "the tracker's error that changes with where the ball is on the platter"
     )
     return (
         f"{what} dominates the uncertainty of {name} ({model}): +-"

@@ -397,6 +397,40 @@ def test_a_ball_on_a_label_its_share_does_not_tell_from_it_is_found_by_its_colou
     assert np.hypot(got.u - centroid[0], got.v - centroid[1]) < 0.6
 
 
+def test_a_ball_of_two_colours_is_followed_by_both():
+    """A checkered ball, red and blue squares on a grey platter, its colour taken as the red
+    (as the search takes the more distinct half's): by the red alone its blob is two of the
+    squares, half the ball's area (the size check refused such a track, and a MuJoCo video of
+    a white ball with red squares lost it where the red squares turned away).  The first
+    frame shows the second colour on the ball: followed by both, the blob is the whole ball,
+    its centre within 0.2 px (0.01 R)."""
+    from turntable.video.decode import Picture, lab
+    from turntable.video.find import Found
+    from turntable.video.follow import ball_colours
+    from turntable.video.regions import Candidate
+
+    red, blue = _shaded_ball(0.5, ball_rgb=(200, 30, 30)), _shaded_ball(0.5, ball_rgb=(30, 60, 200))
+    r_px, (u0, v0) = red[3], red[4]
+    v, u = np.mgrid[0:96, 0:96]
+    squares = (u < u0) == (v < v0)  # two squares red, two blue
+    planes = [
+        np.where(squares[::k, ::k], a, b)
+        for k, a, b in zip((1, 2, 2), red[0][:3], blue[0][:3], strict=True)
+    ]
+    picture = Picture(*planes, False)
+    box = (slice(0, 96), slice(0, 96))
+    colour = blobs.Colour(red[1], lab(picture, box)[2, 2].astype(float))  # the grey platter's
+    ball = Candidate(float(u0), float(v0), math.pi * r_px**2, red[1], 50.0, 1.0)
+    both = ball_colours(picture, Found(ball, ball, colour, colour, []))
+    assert len(both.targets) == 2
+    allowed = np.ones((96, 96), bool)
+    alone = blobs.blobs(picture, box, colour, allowed, outline=r_px)
+    assert max(b.area for b in alone) < 0.6 * math.pi * r_px**2
+    (got,) = blobs.blobs(picture, box, both, allowed, outline=r_px)
+    assert abs(got.area / (math.pi * r_px**2) - 1) < 0.1
+    assert np.hypot(got.u - u0, got.v - v0) < 0.2
+
+
 def test_a_crescent_of_the_ball_s_size_is_no_ball() -> None:
     """A steel ball on a platter of its grey: only its shaded limb and its shadow differ from
     the platter, a crescent of about the ball's area.  Its centre was followed, 0.75 R off the

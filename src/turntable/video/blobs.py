@@ -119,6 +119,11 @@ class Colour(NamedTuple):
         share[off2 > np.float32(OFF_LINE**2 * step2 * step2)] = 0.0
         return share
 
+    @property
+    def targets(self) -> list[NDArray[np.float64]]:
+        """The colour looked for, as `Colours` has its colours."""
+        return [self.target]
+
     def edge_share(
         self, lab_img: NDArray[np.float32], share: NDArray[np.float32] | None = None
     ) -> NDArray[np.float32]:
@@ -132,6 +137,28 @@ class Colour(NamedTuple):
             return share
         lightness = (lab_img[..., 0] - np.float32(self.platter[0])) / np.float32(step)
         return np.where(share == 0.0, np.float32(0.0), lightness)
+
+
+class Colours(NamedTuple):
+    """A ball of several colours (white with red squares, say), each on the line from the
+    platter's: a pixel's share is the largest of its shares of them."""
+
+    colours: tuple[Colour, ...]
+
+    @property
+    def targets(self) -> list[NDArray[np.float64]]:
+        """The colours looked for (CIELAB)."""
+        return [c.target for c in self.colours]
+
+    def share(self, lab_img: NDArray[np.float32]) -> NDArray[np.float32]:
+        """The largest of the colours' `Colour.share`."""
+        return np.maximum.reduce([c.share(lab_img) for c in self.colours])
+
+    def edge_share(
+        self, lab_img: NDArray[np.float32], share: NDArray[np.float32] | None = None
+    ) -> NDArray[np.float32]:
+        """The largest of the colours' `Colour.edge_share` (``share`` is not used)."""
+        return np.maximum.reduce([c.edge_share(lab_img) for c in self.colours])
 
 
 class Blob(NamedTuple):
@@ -149,7 +176,7 @@ class Blob(NamedTuple):
 def blobs(
     picture: Picture,
     box: tuple[slice, slice],
-    colour: Colour,
+    colour: Colour | Colours,
     allowed: NDArray[np.bool_],
     threshold: float = THRESHOLD,
     outline: float = 0.0,
@@ -205,7 +232,11 @@ def blobs(
 
 
 def merged_ball(
-    picture: Picture, box: tuple[slice, slice], colour: Colour, near: NDArray, radius: float
+    picture: Picture,
+    box: tuple[slice, slice],
+    colour: Colour | Colours,
+    near: NDArray,
+    radius: float,
 ) -> Blob | None:
     """A ball whose blob runs into something of a like colour (a label it crosses): its
     centre from the outline about ``near`` where half of the rays find it (the half that
@@ -237,7 +268,7 @@ def merged_ball(
                 math.pi * radius**2, False)  # fmt: skip
 
 
-def _told_from_around(lab_img, share, edge, colour: Colour, start, radius: float):
+def _told_from_around(lab_img, share, edge, colour, start, radius: float):
     """``edge`` where the ball's blob runs into something of another colour (`AROUND`):
     each pixel's share weighed by how much nearer the ball's colour it lies than that
     thing's (1 on the ball, 0 on it, 1/2 half-way), so that the ball's outline is seen
@@ -248,9 +279,11 @@ def _told_from_around(lab_img, share, edge, colour: Colour, start, radius: float
     if beyond.sum() < AROUND_MIN * math.pi * radius**2:
         return None
     other = np.median(lab_img[beyond], axis=0)
-    if np.linalg.norm(other - colour.target) < AROUND_CONTRAST:
+    if min(np.linalg.norm(other - c) for c in colour.targets) < AROUND_CONTRAST:
         return None
-    to_ball = np.linalg.norm(lab_img - colour.target.astype(np.float32), axis=-1)
+    to_ball = np.minimum.reduce(
+        [np.linalg.norm(lab_img - c.astype(np.float32), axis=-1) for c in colour.targets]
+    )
     to_other = np.linalg.norm(lab_img - other.astype(np.float32), axis=-1)
     nearer = 0.5 + (to_other - to_ball) / np.maximum(to_other + to_ball, 1e-6)
     return edge * np.clip(nearer, 0.0, 1.0).astype(np.float32)

@@ -294,14 +294,18 @@ def test_what_the_rim_cuts_is_no_candidate() -> None:
     np.testing.assert_allclose(centres[0], (250.0, 100.0), atol=0.5)
 
 
-def _shaded_ball(ambient: float, label: float = 0.0) -> tuple:
+def _shaded_ball(
+    ambient: float, label: float = 0.0, paper=None, edge: float = 0.0, ball_rgb=(40, 160, 60)
+) -> tuple:
     """A green ball lit from one side, low (50 degrees from the zenith), on a grey platter with
     its shadow, drawn as `turntable.video.render` draws it (`_scene.sphere`: the share of each
     pixel it covers, Lambert's shading with ``ambient``), seen from above and read back as a
     4:2:0 frame: the picture, the ball's colour, the platter's, the radius of its image (px)
     and the centroid of its silhouette (px).  With ``label``, the ball lies on the edge of a
     label of a like colour (``label`` of the way from the platter's colour to the ball's):
-    the label's edge runs through the ball's centre, so half of its outline borders it."""
+    the label's edge runs through the ball's centre, so half of its outline borders it; or
+    of the colour ``paper`` (RGB), its edge ``edge`` of R beyond the ball's centre.  The ball
+    is green unless ``ball_rgb`` says."""
     from turntable.video import _scene, camera
     from turntable.video.decode import Picture, lab, yuv420
 
@@ -312,7 +316,7 @@ def _shaded_ball(ambient: float, label: float = 0.0) -> tuple:
     light[2] = math.cos(math.radians(50))
     v, u = np.mgrid[0 : size[1], 0 : size[0]].astype(float)
     rays = camera.rays(pose, u, v)
-    green, grey = np.array([40.0, 160.0, 60.0]), np.array([150.0, 150.0, 155.0])
+    green, grey = np.array(ball_rgb, float), np.array([150.0, 150.0, 155.0])
     cov, shade = _scene.sphere(rays, [tuple(ball - camera.centre(pose))], radius, pose.focal,
                                light, green, (ambient, 0.0, 1.0))  # fmt: skip
     # the shadow: the platter's points whose line to the light passes through the ball
@@ -320,7 +324,8 @@ def _shaded_ball(ambient: float, label: float = 0.0) -> tuple:
     p = np.dstack([xy, np.zeros(u.shape)]) - ball
     miss = np.linalg.norm(p - (p @ light)[..., None] * light, axis=-1)
     dark = np.clip(0.5 + (radius - miss) / (radius / 20.0), 0, 1) * ((p @ light) < 0)
-    under = np.where((xy[..., 0] < ball[0])[..., None], grey + label * (green - grey), grey)
+    paper = grey + label * (green - grey) if paper is None else np.asarray(paper, float)
+    under = np.where((xy[..., 0] < ball[0] + edge * radius)[..., None], paper, grey)
     platter = under * (1 - 0.4 * dark)[..., None]
     img = np.clip(platter * (1 - cov)[..., None] + shade + 0.5, 0, 255).astype(np.uint8)
     frame = yuv420(img)
@@ -367,6 +372,63 @@ def test_a_ball_on_a_label_of_a_like_colour_is_found_by_the_half_of_its_outline(
     got = blobs.merged_ball(picture, box, colour, centroid + np.array([1.5, -1.0]), r_px)
     assert got is not None
     assert np.hypot(got.u - centroid[0], got.v - centroid[1]) < 0.2
+
+
+def test_a_ball_on_a_label_its_share_does_not_tell_from_it_is_found_by_its_colour():
+    """An orange ball that has rolled most of the way onto a red label on a grey platter: the
+    label's share on the line from the platter's grey to the ball's orange is that of the
+    ball, and less than half of the ball's outline borders the platter.  Telling the ball's
+    colour from the label's around it, its outline is found against the label too: the
+    centre within 0.6 px (0.03 R).  By its share alone it was not found (an orange ball on
+    a red label, MuJoCo: lost for 0.7 s, and the video refused)."""
+    from turntable.video.decode import lab
+
+    picture, colour, _, r_px, centroid = _shaded_ball(
+        0.5, paper=(200, 30, 30), edge=0.4, ball_rgb=(230, 120, 20)
+    )
+    box = (slice(0, 96), slice(0, 96))
+    lab_img = lab(picture, box)
+    colour = blobs.Colour(colour, lab_img[90, 90].astype(float))  # the grey platter's
+    assert colour.share(lab_img)[5, 5] > 0.9  # the label: of the ball's share
+    (merged,) = blobs.blobs(picture, box, colour, np.ones((96, 96), bool), outline=r_px)
+    assert merged.area > 2 * math.pi * r_px**2
+    got = blobs.merged_ball(picture, box, colour, centroid + np.array([1.5, -1.0]), r_px)
+    assert got is not None
+    assert np.hypot(got.u - centroid[0], got.v - centroid[1]) < 0.6
+
+
+def test_a_ball_of_two_colours_is_followed_by_both():
+    """A checkered ball, red and blue squares on a grey platter, its colour taken as the red
+    (as the search takes the more distinct half's): by the red alone its blob is two of the
+    squares, half the ball's area (the size check refused such a track, and a MuJoCo video of
+    a white ball with red squares lost it where the red squares turned away).  The first
+    frame shows the second colour on the ball: followed by both, the blob is the whole ball,
+    its centre within 0.2 px (0.01 R)."""
+    from turntable.video.decode import Picture, lab
+    from turntable.video.find import Found
+    from turntable.video.follow import ball_colours
+    from turntable.video.regions import Candidate
+
+    red, blue = _shaded_ball(0.5, ball_rgb=(200, 30, 30)), _shaded_ball(0.5, ball_rgb=(30, 60, 200))
+    r_px, (u0, v0) = red[3], red[4]
+    v, u = np.mgrid[0:96, 0:96]
+    squares = (u < u0) == (v < v0)  # two squares red, two blue
+    planes = [
+        np.where(squares[::k, ::k], a, b)
+        for k, a, b in zip((1, 2, 2), red[0][:3], blue[0][:3], strict=True)
+    ]
+    picture = Picture(*planes, False)
+    box = (slice(0, 96), slice(0, 96))
+    colour = blobs.Colour(red[1], lab(picture, box)[2, 2].astype(float))  # the grey platter's
+    ball = Candidate(float(u0), float(v0), math.pi * r_px**2, red[1], 50.0, 1.0)
+    both = ball_colours(picture, Found(ball, ball, colour, colour, []))
+    assert len(both.targets) == 2
+    allowed = np.ones((96, 96), bool)
+    alone = blobs.blobs(picture, box, colour, allowed, outline=r_px)
+    assert max(b.area for b in alone) < 0.6 * math.pi * r_px**2
+    (got,) = blobs.blobs(picture, box, both, allowed, outline=r_px)
+    assert abs(got.area / (math.pi * r_px**2) - 1) < 0.1
+    assert np.hypot(got.u - u0, got.v - v0) < 0.2
 
 
 def test_a_crescent_of_the_ball_s_size_is_no_ball() -> None:

@@ -68,6 +68,13 @@ ROUND_AREA = (0.4, 2.5)
 #: A ball in a blob of a like colour (`merged_ball`): found by this many outline points at
 #: least (half of the rays), within this share of the radius of where it is predicted.
 MERGED_POINTS, MERGED_REACH = 24, 0.25
+#: A ball whose blob runs into something of another colour that its share does not tell from
+#: it (an orange ball on a red label, both far from a grey platter's colour on the line to the
+#: ball's): that thing is what of the blob lies beyond ``AROUND`` of the ball's radii from
+#: where it is predicted, at least ``AROUND_MIN`` of the ball's image area; its colour is
+#: told from the ball's where they differ by ``AROUND_CONTRAST`` (CIELAB) at least (a
+#: label of the ball's own colour is not: the ball is not seen on it).
+AROUND, AROUND_MIN, AROUND_CONTRAST = 1.5, 0.25, 10.0
 #: A ball whose hard shadow merges into its blob (a black ball on a light platter): the
 #: outline's points on the shadow's far edge pull the least-squares circle aside.  The circle
 #: of the ball's radius through the most of the outline's weight within ``ARC_PX`` px (tried
@@ -112,6 +119,11 @@ class Colour(NamedTuple):
         share[off2 > np.float32(OFF_LINE**2 * step2 * step2)] = 0.0
         return share
 
+    @property
+    def targets(self) -> list[NDArray[np.float64]]:
+        """The colour looked for, as `Colours` has its colours."""
+        return [self.target]
+
     def edge_share(
         self, lab_img: NDArray[np.float32], share: NDArray[np.float32] | None = None
     ) -> NDArray[np.float32]:
@@ -125,6 +137,28 @@ class Colour(NamedTuple):
             return share
         lightness = (lab_img[..., 0] - np.float32(self.platter[0])) / np.float32(step)
         return np.where(share == 0.0, np.float32(0.0), lightness)
+
+
+class Colours(NamedTuple):
+    """A ball of several colours (white with red squares, say), each on the line from the
+    platter's: a pixel's share is the largest of its shares of them."""
+
+    colours: tuple[Colour, ...]
+
+    @property
+    def targets(self) -> list[NDArray[np.float64]]:
+        """The colours looked for (CIELAB)."""
+        return [c.target for c in self.colours]
+
+    def share(self, lab_img: NDArray[np.float32]) -> NDArray[np.float32]:
+        """The largest of the colours' `Colour.share`."""
+        return np.maximum.reduce([c.share(lab_img) for c in self.colours])
+
+    def edge_share(
+        self, lab_img: NDArray[np.float32], share: NDArray[np.float32] | None = None
+    ) -> NDArray[np.float32]:
+        """The largest of the colours' `Colour.edge_share` (``share`` is not used)."""
+        return np.maximum.reduce([c.edge_share(lab_img) for c in self.colours])
 
 
 class Blob(NamedTuple):
@@ -142,7 +176,7 @@ class Blob(NamedTuple):
 def blobs(
     picture: Picture,
     box: tuple[slice, slice],
-    colour: Colour,
+    colour: Colour | Colours,
     allowed: NDArray[np.bool_],
     threshold: float = THRESHOLD,
     outline: float = 0.0,
@@ -198,12 +232,19 @@ def blobs(
 
 
 def merged_ball(
-    picture: Picture, box: tuple[slice, slice], colour: Colour, near: NDArray, radius: float
+    picture: Picture,
+    box: tuple[slice, slice],
+    colour: Colour | Colours,
+    near: NDArray,
+    radius: float,
 ) -> Blob | None:
     """A ball whose blob runs into something of a like colour (a label it crosses): its
     centre from the outline about ``near`` where half of the rays find it (the half that
     borders the platter, at least, when the ball lies on the label's edge), within R / 4 of
-    ``near``; None if not (a label of the ball's own colour hides more than that)."""
+    ``near``; None if not (a label of the ball's own colour hides more than that).  Where the
+    share does not tell the ball from what it runs into (a red label under an orange ball on a
+    grey platter: both far along the line from the grey to the orange), the outline is looked
+    for again with the ball's colour told from that thing's (`_told_from_around`)."""
     lab_img = lab(picture, box)
     start = np.array([near[0] - box[1].start, near[1] - box[0].start])
     h, w = lab_img.shape[:2]
@@ -214,10 +255,38 @@ def merged_ball(
         return None
     edge = colour.edge_share(lab_img, share)
     centre = outline_centre(edge, start, radius, None, min_points=MERGED_POINTS)
+    if centre is None:
+        edge = _told_from_around(lab_img, share, edge, colour, start, radius)
+        centre = (
+            None
+            if edge is None
+            else outline_centre(edge, start, radius, None, min_points=MERGED_POINTS)
+        )
     if centre is None or np.hypot(*(centre - start)) > MERGED_REACH * radius:
         return None
     return Blob(float(centre[0]) + box[1].start, float(centre[1]) + box[0].start,
                 math.pi * radius**2, False)  # fmt: skip
+
+
+def _told_from_around(lab_img, share, edge, colour, start, radius: float):
+    """``edge`` where the ball's blob runs into something of another colour (`AROUND`):
+    each pixel's share weighed by how much nearer the ball's colour it lies than that
+    thing's (1 on the ball, 0 on it, 1/2 half-way), so that the ball's outline is seen
+    against it too; None where nothing of another colour lies around the ball."""
+    h, w = share.shape
+    vv, uu = np.mgrid[0:h, 0:w]
+    beyond = (share > THRESHOLD) & (np.hypot(uu - start[0], vv - start[1]) > AROUND * radius)
+    if beyond.sum() < AROUND_MIN * math.pi * radius**2:
+        return None
+    other = np.median(lab_img[beyond], axis=0)
+    if min(np.linalg.norm(other - c) for c in colour.targets) < AROUND_CONTRAST:
+        return None
+    to_ball = np.minimum.reduce(
+        [np.linalg.norm(lab_img - c.astype(np.float32), axis=-1) for c in colour.targets]
+    )
+    to_other = np.linalg.norm(lab_img - other.astype(np.float32), axis=-1)
+    nearer = 0.5 + (to_other - to_ball) / np.maximum(to_other + to_ball, 1e-6)
+    return edge * np.clip(nearer, 0.0, 1.0).astype(np.float32)
 
 
 def outline_centre(

@@ -3,10 +3,10 @@
 Each is looked for in a window about where its last steps predict it (the mark along its
 circle about the rim's centre), as a blob of its own colour (`turntable.video.blobs`) of
 about its own size; a ball whose blob runs into a label of a like colour, by its
-outline.  Where the mark passes next to the ball, so that their images may touch,
-neither is measured on that frame; a frame where the ball is not found is a gap, never a
-guessed position.  The rim's points are collected on ``RIM_FRAMES`` frames spread over the
-video.
+outline; a ball of two colours (`ball_colours`), by both.  Where the mark passes next to
+the ball, so that their images may touch, neither is measured on that frame; a frame where
+the ball is not found is a gap, never a guessed position.  The rim's points are collected
+on ``RIM_FRAMES`` frames spread over the video.
 """
 
 from __future__ import annotations
@@ -19,7 +19,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from turntable.video import camera
-from turntable.video.blobs import Blob, Colour, blobs, merged_ball
+from turntable.video.blobs import THRESHOLD, Blob, Colour, Colours, blobs, merged_ball
 from turntable.video.camera import Pose
 from turntable.video.decode import Picture, VideoError, lab, rgb, window
 from turntable.video.find import RIM_MARGIN_PX, Candidate, Found
@@ -56,6 +56,13 @@ EDGE_RADII, EDGE_PX = 1.5, 2.0
 #: not in a gap: where it is is no longer predicted well enough to take the next blob of its
 #: colour for it.  A seed in a later frame (`turntable.video.seeds`) follows it from there.
 MAX_GAP_S, MAX_GAP_FRAMES = 0.5, 10
+#: A ball of two colours (white with red squares): where at least ``SECOND_SHARE`` of the
+#: disc within ``SECOND_INNER`` of its radius on the first frame (its shaded limb left out) is
+#: not of the ball's colour but differs from the platter by at least ``SECOND_CONTRAST`` of the
+#: ball's colour's distance from it, the ball is followed by both colours: by its colour
+#: alone, its blob was one of its squares, its centre off by up to 0.15 R, and lost where the
+#: squares turned away.  A highlight or a shaded side covers less of the disc.
+SECOND_SHARE, SECOND_INNER, SECOND_CONTRAST = 0.25, 0.7, 0.5
 #: The mark's turn from where it was last seen within these factors of the platter's (the
 #: image's angles about the rim's centre are the plane's within a factor 1 / cos(tilt)), where
 #: the platter turns by at least `TURN_SEEN` (rad) in between.
@@ -272,6 +279,7 @@ class _Run:
         self.times, self.ball_uv, self.areas, self.mark_uv = [], [], [], []
         self.rim_pts = [rim_points]
         self.allowed = None
+        self.ball_colour: Colour | Colours | None = None
 
     def frame(self, index: int, t: float, picture: Picture) -> None:
         """Follow both on one frame."""
@@ -279,6 +287,7 @@ class _Run:
         rim = self.platter.rim
         if self.allowed is None:
             self.allowed = rim.mask(picture.shape, 1.0 - RIM_MARGIN_PX / rim.b)
+            self.ball_colour = ball_colours(picture, found)
         self.times.append(t)
         # the rim's points, on frames spread over the video
         if index % self.every == 0 and index:
@@ -290,7 +299,7 @@ class _Run:
         got = m = None
         if not ball.given_up:
             r = (self.pose, self.ball_radius, self.sizes, rim.a)
-            got = _ball_blob(picture, ball, found, self.allowed, *r)
+            got = _ball_blob(picture, ball, found, self.ball_colour, self.allowed, *r)
             _refuse_at_the_edge(got, picture, self.sizes.ball, index, t)
         if not mark.given_up:
             r = (got, self.sizes, self.mark_step, t)
@@ -327,9 +336,29 @@ class _Sizes(NamedTuple):
     mark: float
 
 
-def _ball_blob(picture, ball, found: Found, allowed, pose, ball_radius, sizes: _Sizes, reach):
-    """The ball's blob in a window about where it is predicted, at most ``reach`` px from it
-    (None if not found)."""
+def ball_colours(picture: Picture, found: Found) -> Colour | Colours:
+    """The colours the ball is followed by: its own, and a second where the first frame shows
+    one on it (`SECOND_SHARE`)."""
+    colour, ball = found.ball_colour, found.ball
+    r = SECOND_INNER * math.sqrt(ball.area / math.pi)
+    box = window((ball.u, ball.v), r, picture.shape)
+    pix = lab(picture, box)
+    vv, uu = np.mgrid[box[0], box[1]]
+    pix = pix[np.hypot(uu - ball.u, vv - ball.v) < r]
+    far = SECOND_CONTRAST * np.linalg.norm(colour.target - colour.platter)
+    other = (colour.share(pix) < THRESHOLD) & (
+        np.linalg.norm(pix - colour.platter.astype(np.float32), axis=-1) > far
+    )
+    if not len(pix) or other.mean() < SECOND_SHARE:
+        return colour
+    return Colours((colour, Colour(np.median(pix[other], axis=0).astype(float), colour.platter)))
+
+
+def _ball_blob(
+    picture, ball, found: Found, colour, allowed, pose, ball_radius, sizes: _Sizes, reach
+):
+    """The ball's blob of ``colour`` in a window about where it is predicted, at most
+    ``reach`` px from it (None if not found)."""
     near = ball.predict()
     v = ball.speed()
     r_px = sizes.ball
@@ -338,17 +367,13 @@ def _ball_blob(picture, ball, found: Found, allowed, pose, ball_radius, sizes: _
     box = window(tuple(near), half, picture.shape)
     radius = float(camera.image_radius(pose, near, ball_radius)[0])
     got = _pick(
-        [
-            b
-            for b in blobs(picture, box, found.ball_colour, allowed, outline=radius)
-            if b.touches or not b.cut
-        ],
+        [b for b in blobs(picture, box, colour, allowed, outline=radius) if b.touches or not b.cut],
         near,
         ball.reference_area(found.ball.area),
         BALL_AREA if ball.area else BALL_AREA_FIRST,
     )
     if got is None:
-        got = merged_ball(picture, box, found.ball_colour, near, radius)
+        got = merged_ball(picture, box, colour, near, radius)
     return got
 
 

@@ -570,6 +570,19 @@ def test_a_ball_of_the_platter_s_grey_is_refused_for_what_it_is(
     assert "--ball-at" not in res.stderr
 
 
+def test_a_seed_on_the_crescent_of_a_ball_of_the_platter_s_grey_is_refused(
+    tmp_path, capsys
+) -> None:
+    """--ball-at on the shaded side of a ball of the platter's grey: following the crescent
+    is not following the ball (on a MuJoCo scene it passed every check, 0.75 R off)."""
+    path = tmp_path / "scene_SYNTHETIC.mp4"
+    render_video(path, "slipping", 2.0, STATE0, SETUP, SCENE._replace(**STEEL_ON_GREY), seed=11)
+    res = run_here(capsys, "track", str(path), "--ball-radius", "0.008", "--platter-radius",
+                   "0.15", "-o", str(tmp_path / "film.csv"), "--ball-at", "291,106")  # fmt: skip
+    assert res.returncode == 2
+    assert "--ball-at 291,106 is on a crescent" in res.stderr
+
+
 def test_fit_video_reports_both_parts_of_its_standard_error(rendered, capsys) -> None:
     """The coefficient's standard error is the statistical one and the calibration's added
     in quadrature, both reported; FILM.json says whether the lens's k1 is measured."""

@@ -185,7 +185,14 @@ def find(
     for option, at in (("--ball-at", ball_at), ("--mark-at", mark_at)):
         if at is not None:
             seeded[option] = len(paths)
-            paths.append(_Path(_at_seed(option, at, look, lab0, pose, ball_radius, paths), t0))
+            c = _at_seed(option, at, look, lab0, pose, ball_radius, paths)
+            if option == "--ball-at" and _crescent(c, pose, ball_radius):
+                raise VideoError(
+                    f"--ball-at {at[0]:g},{at[1]:g} is on a crescent, not round, of a ball's "
+                    f"size (a ball's shaded side and its shadow): {CRESCENT_HINT}",
+                    [p.c for p in paths] + [c],
+                )
+            paths.append(_Path(c, t0))
     # 3. each followed over the probe, its path seen on the platter's plane
     seen = _follow_probe(paths, probe[1:], look)
     planes = [_on_plane(p, len(probe), pose) for p in paths]
@@ -374,16 +381,18 @@ def _ball_and_its_mark(marks, planes, candidates, ball, pose, ball_radius, toler
     return m, rate, ball
 
 
+def _crescent(c: Candidate, pose: Pose, ball_radius: float) -> bool:
+    """Of a ball's area and whole, but not round: a ball's shaded side and its shadow, its lit
+    side of the platter's colour (`CRESCENT_HINT`)."""
+    area = c.area / _area_at(pose, (c.u, c.v), ball_radius)
+    return AREA_RANGE[0] < area < AREA_RANGE[1] and c.fill >= MIN_FILL and c.solidity < MIN_SOLIDITY
+
+
 def _refuse_a_crescent(others, pose, ball_radius) -> None:
-    """Refuse a ball of nearly the platter's colour: among the candidates that move on their
-    own (the others None), one of a ball's area and whole but not round (`CRESCENT_HINT`)."""
+    """Refuse a ball of nearly the platter's colour: a crescent (`_crescent`) among the
+    candidates that move on their own (the others None)."""
     for c in others:
-        if (
-            c is not None
-            and AREA_RANGE[0] < c.area / _area_at(pose, (c.u, c.v), ball_radius) < AREA_RANGE[1]
-            and c.fill >= MIN_FILL
-            and c.solidity < MIN_SOLIDITY
-        ):
+        if c is not None and _crescent(c, pose, ball_radius):
             raise VideoError(
                 f"no ball found on the first frame: what moves on its own at ({c.u:.0f}, "
                 f"{c.v:.0f}) px, of a ball's size, is a crescent, not round (a ball's shaded "

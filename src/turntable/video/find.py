@@ -14,6 +14,8 @@ camera that the rim alone gives.  What tells them apart is how they move:
 
 Two candidates that could each be the ball are refused, as is a scene with no mark: the seeds
 ``--ball-at U,V`` and ``--mark-at U,V`` (pixels of the first frame) then say which is which.
+A ball of nearly the platter's colour, of which only a crescent differs from the platter
+(`CRESCENT_HINT`), is refused as such, seeded or not: no seed would help.
 """
 
 from __future__ import annotations
@@ -173,8 +175,8 @@ def find(
     Raises
     ------
     VideoError
-        No ball, two possible balls, no mark, or a seed with nothing there; its ``found``
-        holds the candidates.
+        No ball, a ball of nearly the platter's colour, two possible balls, no mark, or a
+        seed with nothing there; its ``found`` holds the candidates.
     """
     t0, picture0 = probe[0]
     # 1. where candidates are looked for, and how far from the platter's colour they are

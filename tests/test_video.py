@@ -526,6 +526,53 @@ def test_scenes_outside_the_guide_are_refused(fields, says, tmp_path, capsys) ->
     assert "--ball-at" in res.stderr
 
 
+#: A steel ball on a platter of nearly its grey, lit from 45 degrees: only its shaded side and
+#: its shadow differ from the platter, a crescent of a ball's area.
+STEEL_ON_GREY = {
+    "ball_colour": (170, 172, 178), "ball_finish": "specular", "platter_colour": (150, 150, 155),
+    "table_colour": (150, 110, 70), "mark_colour": (20, 20, 20), "shadow": 0.7,
+    "light_elevation_deg": 45.0,
+}  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    ("fields", "state0"),
+    [
+        pytest.param({}, STATE0, id="no-ball"),
+        # a mark of 0.65 R (0.42 of the ball's area), the crescent beyond 0.45 P: the mark was
+        # taken for the ball and the crescent for the mark ("give --mark-at", which failed too)
+        pytest.param({"mark_radius": 0.65}, [9.0, 0.0, 0.0, 0.4, 0.0, 0.0], id="swap"),
+    ],
+)  # fmt: skip
+def test_a_ball_of_the_platter_s_grey_is_refused_for_what_it_is(
+    fields, state0, tmp_path, capsys
+) -> None:
+    """A ball of nearly the platter's grey is refused as such, asking for no seed (a seed on
+    its crescent follows the crescent, not the ball)."""
+    path = tmp_path / "scene_SYNTHETIC.mp4"
+    scene = SCENE._replace(**STEEL_ON_GREY, **fields)
+    render_video(path, "slipping", 2.0, state0, SETUP, scene, seed=11)
+    res = run_here(capsys, "track", str(path), "--ball-radius", "0.008", "--platter-radius",
+                   "0.15", "-o", str(tmp_path / "film.csv"))  # fmt: skip
+    assert res.returncode == 2
+    assert "differs too little from the platter" in res.stderr
+    assert "--mark-at" not in res.stderr
+    assert "--ball-at" not in res.stderr
+
+
+def test_a_seed_on_the_crescent_of_a_ball_of_the_platter_s_grey_is_refused(
+    tmp_path, capsys
+) -> None:
+    """--ball-at on the shaded side of a ball of the platter's grey: following the crescent
+    is not following the ball (on a MuJoCo scene it passed every check, 0.75 R off)."""
+    path = tmp_path / "scene_SYNTHETIC.mp4"
+    render_video(path, "slipping", 2.0, STATE0, SETUP, SCENE._replace(**STEEL_ON_GREY), seed=11)
+    res = run_here(capsys, "track", str(path), "--ball-radius", "0.008", "--platter-radius",
+                   "0.15", "-o", str(tmp_path / "film.csv"), "--ball-at", "291,106")  # fmt: skip
+    assert res.returncode == 2
+    assert "--ball-at 291,106 is on a crescent" in res.stderr
+
+
 def test_fit_video_reports_both_parts_of_its_standard_error(rendered, capsys) -> None:
     """The coefficient's standard error is the statistical one, the calibration's and the
     tracker's added in quadrature, all reported; FILM.json says whether the lens's k1 is

@@ -14,6 +14,8 @@ camera that the rim alone gives.  What tells them apart is how they move:
 
 Two candidates that could each be the ball are refused, as is a scene with no mark: the seeds
 ``--ball-at U,V`` and ``--mark-at U,V`` (pixels of the first frame) then say which is which.
+A ball of nearly the platter's colour, of which only a crescent differs from the platter
+(`CRESCENT_HINT`), is refused as such, seeded or not: no seed would help.
 """
 
 from __future__ import annotations
@@ -56,6 +58,18 @@ MIN_FILL = 0.8
 #: A candidate not of a ball's shape (a black ball and its shadow on a light platter, cut as
 #: one region) is split by colour into this many clusters, each part a candidate too.
 RESPLIT_CLUSTERS = 2
+#: A ball of nearly the platter's colour (a steel ball on a mid-grey platter): its lit side is
+#: of the platter's grey, and what differs is its shaded limb with its shadow, a crescent that
+#: covers less of its hull than `MIN_SOLIDITY` (0.58-0.76 on MuJoCo's steel balls on a platter
+#: of grey 150), whole (`MIN_FILL`) and of a ball's area (`AREA_RANGE`).  Where it alone moves
+#: on its own, the ball is refused as too like the platter: the mark may not be taken for the
+#: ball (then the crescent, turning slowly over the probe, for the mark), and a seed on it
+#: follows the crescent, not the ball (0.75 R off on such a scene, every check passed).
+CRESCENT_HINT = (
+    "the ball differs too little from the platter: a ball of nearly the platter's colour is "
+    "not tracked (its lit side is of the platter's shade); film a ball in more contrast with "
+    "the platter (white, black or coloured)"
+)
 #: A seed's region is looked for within this many times the radius of a ball's image there.
 SEED_REACH = 4.0
 #: Rates of a mark seen in two probe frames agree within this share (a mark seeded where it
@@ -161,8 +175,8 @@ def find(
     Raises
     ------
     VideoError
-        No ball, two possible balls, no mark, or a seed with nothing there; its ``found``
-        holds the candidates.
+        No ball, a ball of nearly the platter's colour, two possible balls, no mark, or a
+        seed with nothing there; its ``found`` holds the candidates.
     """
     t0, picture0 = probe[0]
     # 1. where candidates are looked for, and how far from the platter's colour they are
@@ -173,7 +187,14 @@ def find(
     for option, at in (("--ball-at", ball_at), ("--mark-at", mark_at)):
         if at is not None:
             seeded[option] = len(paths)
-            paths.append(_Path(_at_seed(option, at, look, lab0, pose, ball_radius, paths), t0))
+            c = _at_seed(option, at, look, lab0, pose, ball_radius, paths)
+            if option == "--ball-at" and _crescent(c, pose, ball_radius):
+                raise VideoError(
+                    f"--ball-at {at[0]:g},{at[1]:g} is on a crescent, not round, of a ball's "
+                    f"size (a ball's shaded side and its shadow): {CRESCENT_HINT}",
+                    [p.c for p in paths] + [c],
+                )
+            paths.append(_Path(c, t0))
     # 3. each followed over the probe, its path seen on the platter's plane
     seen = _follow_probe(paths, probe[1:], look)
     planes = [_on_plane(p, len(probe), pose) for p in paths]
@@ -340,7 +361,7 @@ def _ball_and_its_mark(marks, planes, candidates, ball, pose, ball_radius, toler
     seeded): of the candidates that do not turn rigidly at its rate, those followed over the
     probe and whole, if any, else split, else all (`_choose_ball`)."""
     m, rate, seeded = None, None, ball
-    for m, rate in marks:
+    for n, (m, rate) in enumerate(marks):
         rigid = [
             rate is not None and planes[i] is not None and _turning(*planes[i], rate)[2] < tolerance
             for i in range(len(candidates))
@@ -357,7 +378,29 @@ def _ball_and_its_mark(marks, planes, candidates, ball, pose, ball_radius, toler
                 ball = _choose_ball(chosen, pose, ball_radius)
         if ball is not None:
             break
+        if n == 0:
+            _refuse_a_crescent(others, pose, ball_radius)
     return m, rate, ball
+
+
+def _crescent(c: Candidate, pose: Pose, ball_radius: float) -> bool:
+    """Of a ball's area and whole, but not round: a ball's shaded side and its shadow, its lit
+    side of the platter's colour (`CRESCENT_HINT`)."""
+    area = c.area / _area_at(pose, (c.u, c.v), ball_radius)
+    return AREA_RANGE[0] < area < AREA_RANGE[1] and c.fill >= MIN_FILL and c.solidity < MIN_SOLIDITY
+
+
+def _refuse_a_crescent(others, pose, ball_radius) -> None:
+    """Refuse a ball of nearly the platter's colour: a crescent (`_crescent`) among the
+    candidates that move on their own (the others None)."""
+    for c in others:
+        if c is not None and _crescent(c, pose, ball_radius):
+            raise VideoError(
+                f"no ball found on the first frame: what moves on its own at ({c.u:.0f}, "
+                f"{c.v:.0f}) px, of a ball's size, is a crescent, not round (a ball's shaded "
+                f"side and its shadow): {CRESCENT_HINT}",
+                [x for x in others if x is not None],
+            )
 
 
 def _on_plane(p: _Path, frames: int, pose: Pose) -> tuple[NDArray, NDArray] | None:

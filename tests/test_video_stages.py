@@ -172,8 +172,8 @@ def tracked(tmp_path_factory):
     found = Found(ball, mark, None, None, track.candidates)
     area = np.full(len(track.times), math.pi * (RADIUS / PLATTER * track.rim.a) ** 2)
 
-    def run(image=track.image, marks=track.mark_image, cal=track.calibration):
-        paths = Paths(track.times, image, area, marks, np.zeros((0, 2)), 1)
+    def run(image=track.image, marks=track.mark_image, cal=track.calibration, area=area, disc=None):
+        paths = Paths(track.times, image, area, marks, np.zeros((0, 2)), 1, disc)
         return check.checks(cal, paths, found, track.rim, track.calibration.pose,
                             RADIUS, PLATTER, None)  # fmt: skip
 
@@ -253,6 +253,34 @@ def test_a_check_fails_on_what_it_checks(tracked, name, change) -> None:
     assert check.first_failure(results).count("\n") == 0
 
 
+def test_a_ball_seen_by_its_lit_part_is_judged_by_its_circle_where_that_is_sure(
+    tracked, monkeypatch
+) -> None:
+    """A ball whose blob is its lit part, 0.74 of its radius (``radial_tape_dark``): refused
+    by its blob's area.  Where the circle through its outline is confirmed all round on
+    every frame, 0.9 of it covered lit or shaded, its size is that (passed), but not on a
+    third of the frames only, nor for an image smaller than ``DISC_MIN_PX`` (this one, ~6 px:
+    there its one-sided outline moves its centre by more than the scatter check allows), nor
+    for a ball larger than predicted, which its blob's area shows."""
+    from test_video import PLATTER, RADIUS
+
+    track, run = tracked
+    r_px = RADIUS / PLATTER * track.rim.a
+    assert r_px < check.DISC_MIN_PX
+    frames = len(track.times)
+    small = np.full(frames, math.pi * (0.74 * r_px) ** 2)
+    disc = np.full(frames, 0.9 * r_px)
+    assert not run(area=small)["ball_size"]["passed"]
+    assert not run(area=small, disc=disc)["ball_size"]["passed"]  # too small an image
+    monkeypatch.setattr(check, "DISC_MIN_PX", 0.5 * r_px)
+    assert run(area=small, disc=disc)["ball_size"]["passed"]
+    assert check.first_failure(run(area=small, disc=disc)) is None
+    third = np.where(np.arange(frames) % 3 == 0, disc, np.nan)
+    assert not run(area=small, disc=third)["ball_size"]["passed"]
+    large = np.full(frames, math.pi * (1.5 * r_px) ** 2)
+    assert not run(area=large, disc=disc)["ball_size"]["passed"]
+
+
 def test_the_camera_from_the_rim_alone_keeps_a_camera_s_focal_length() -> None:
     """An ellipse is the rim's image for a family of cameras, down to a fisheye's looking
     along the table; a rim seen 1 px too wide on its near side (the platter's side, its
@@ -295,25 +323,32 @@ def test_what_the_rim_cuts_is_no_candidate() -> None:
 
 
 def _shaded_ball(
-    ambient: float, label: float = 0.0, paper=None, edge: float = 0.0, ball_rgb=(40, 160, 60)
+    ambient: float,
+    label: float = 0.0,
+    paper=None,
+    edge: float = 0.0,
+    ball_rgb=(40, 160, 60),
+    zenith_deg: float = 50.0,
+    shadow: float = 0.4,
 ) -> tuple:
-    """A green ball lit from one side, low (50 degrees from the zenith), on a grey platter with
-    its shadow, drawn as `turntable.video.render` draws it (`_scene.sphere`: the share of each
-    pixel it covers, Lambert's shading with ``ambient``), seen from above and read back as a
-    4:2:0 frame: the picture, the ball's colour, the platter's, the radius of its image (px)
-    and the centroid of its silhouette (px).  With ``label``, the ball lies on the edge of a
-    label of a like colour (``label`` of the way from the platter's colour to the ball's):
-    the label's edge runs through the ball's centre, so half of its outline borders it; or
-    of the colour ``paper`` (RGB), its edge ``edge`` of R beyond the ball's centre.  The ball
-    is green unless ``ball_rgb`` says."""
+    """A green ball lit from one side, low (``zenith_deg``: 50 degrees from the zenith), on a
+    grey platter with its shadow, drawn as `turntable.video.render` draws it (`_scene.sphere`:
+    the share of each pixel it covers, Lambert's shading with ``ambient``), seen from above and
+    read back as a 4:2:0 frame: the picture, the ball's colour, the platter's, the radius of its
+    image (px) and the centroid of its silhouette (px).  With ``label``, the ball lies on the
+    edge of a label of a like colour (``label`` of the way from the platter's colour to the
+    ball's): the label's edge runs through the ball's centre, so half of its outline borders
+    it; or of the colour ``paper`` (RGB), its edge ``edge`` of R beyond the ball's centre.
+    The ball is green unless ``ball_rgb`` says; its shadow takes ``shadow`` of the light off
+    the platter."""
     from turntable.video import _scene, camera
     from turntable.video.decode import Picture, lab, yuv420
 
     radius, size = 0.008, (96, 96)
     pose = camera.Pose(1000.0, 0.0, 0.0, (0.0, 0.0), 0.4, size)
     ball = np.array([0.0013, -0.0021, radius])
-    light = np.array([math.cos(0.5), math.sin(0.5), 0.0]) * math.sin(math.radians(50))
-    light[2] = math.cos(math.radians(50))
+    light = np.array([math.cos(0.5), math.sin(0.5), 0.0]) * math.sin(math.radians(zenith_deg))
+    light[2] = math.cos(math.radians(zenith_deg))
     v, u = np.mgrid[0 : size[1], 0 : size[0]].astype(float)
     rays = camera.rays(pose, u, v)
     green, grey = np.array(ball_rgb, float), np.array([150.0, 150.0, 155.0])
@@ -326,7 +361,7 @@ def _shaded_ball(
     dark = np.clip(0.5 + (radius - miss) / (radius / 20.0), 0, 1) * ((p @ light) < 0)
     paper = grey + label * (green - grey) if paper is None else np.asarray(paper, float)
     under = np.where((xy[..., 0] < ball[0] + edge * radius)[..., None], paper, grey)
-    platter = under * (1 - 0.4 * dark)[..., None]
+    platter = under * (1 - shadow * dark)[..., None]
     img = np.clip(platter * (1 - cov)[..., None] + shade + 0.5, 0, 255).astype(np.uint8)
     frame = yuv420(img)
     h, w = size[1], size[0]
@@ -356,6 +391,53 @@ def test_the_centre_of_a_ball_shaded_by_a_low_light_is_that_of_its_silhouette(am
     found = blobs.blobs(picture, box, colour, np.ones((96, 96), bool), outline=r_px)
     assert len(found) == 1
     assert np.hypot(found[0].u - centroid[0], found[0].v - centroid[1]) < 0.15
+
+
+def _white_ball_on_grey(zenith_deg: float, ambient: float = 0.5):
+    """`_shaded_ball`: a white ball on the mid-grey platter lit from the side, its shaded
+    limb darker than the platter and as dark as its shadow; with the edge share of its
+    picture and the centroid of its lit part (its blob)."""
+    from turntable.video.decode import lab
+
+    picture, colour, platter, r_px, centroid = _shaded_ball(
+        ambient, ball_rgb=(240, 240, 235), zenith_deg=zenith_deg, shadow=0.6
+    )
+    colour = blobs.Colour(colour, platter)
+    lab_img = lab(picture)
+    share = colour.share(lab_img)
+    v, u = np.nonzero(share > blobs.THRESHOLD)
+    lit = np.array([u.mean(), v.mean()])
+    return picture, colour, colour.edge_share(lab_img, share), r_px, centroid, lit
+
+
+@pytest.mark.parametrize("zenith", [50.0, 70.0])
+def test_a_white_ball_lit_from_the_side_on_grey_is_the_size_of_its_circle(zenith):
+    """A white ball on a mid-grey platter lit from the side (MuJoCo, unseen.py's
+    ``radial_tape_dark``): its blob is its lit part, 0.68-0.74 of its radius (``ball_size``
+    refused it, 0.741), its shaded limb darker than the platter.  The part of the circle
+    through its outline that it covers, lit or shaded (``disc``), is 0.89-0.94 of its
+    radius (the band between lit and shaded is of the platter's grey), which ``ball_size``
+    passes; its centre within 0.35 px."""
+    picture, colour, _, r_px, centroid, _ = _white_ball_on_grey(zenith)
+    box = (slice(0, 96), slice(0, 96))
+    (got,) = blobs.blobs(picture, box, colour, np.ones((96, 96), bool), outline=r_px)
+    assert math.sqrt(got.area / math.pi) < check.BALL_SIZE[0] * r_px
+    assert check.BALL_SIZE[0] + 0.05 < got.disc / r_px < 1.0
+    assert np.hypot(got.u - centroid[0], got.v - centroid[1]) < 0.35
+
+
+def test_the_arc_of_a_white_ball_lit_from_the_side_is_confirmed_by_its_shaded_limb():
+    """The same ball, lit from 70 degrees off the zenith, the rays cast from 16 px off its
+    centre on its lit side (`radial_tape_dark`: from its lit part's centroid, 5-6 px off,
+    on 24 frames): its outline is the arc of its lit side, and across the rest of the circle
+    the share does not fall outward but lies, inside it, below the platter's (its shaded
+    limb).  The arc's circle is the ball's within 0.15 px; before, refused for the share not
+    falling outward all round, the centre fell back to where the rays were cast from."""
+    _, _, edge, r_px, centroid, lit = _white_ball_on_grey(70.0)
+    start = centroid + 1.6 * (lit - centroid)
+    assert np.hypot(*(start - centroid)) > 15.0
+    got = blobs.outline_centre(edge, start, r_px, start)
+    assert np.hypot(*(got - centroid)) < 0.15
 
 
 @pytest.mark.parametrize("label", [0.75, 0.85, 0.9])

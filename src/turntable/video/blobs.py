@@ -18,6 +18,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
+from turntable.video import limb as limb_module
 from turntable.video.decode import Picture, lab
 from turntable.video.robust import circle_centre, inliers
 
@@ -90,7 +91,8 @@ ARC_PX, ARC_CHORD, ARC_GAIN, ARC_MIN, ARC_FIRST = 1.0, 1.0, 1.25, 0.5, 0.3
 #: least ``ARC_STEP``, on ``ARC_EDGE`` of the rays (sampled ``ARC_ACROSS`` px either side):
 #: on the shadow's side too, from the ball into its lighter shadow.  About the far end of a
 #: shadow it rises into the ball, or stays level in the shadow; a shadow as dark as the ball
-#: shows no edge, and no check can tell them apart.
+#: shows no edge, and no check can tell them apart.  A ray across the ball's shaded limb,
+#: darker than the platter (`turntable.video.limb`), confirms it too.
 ARC_STEP, ARC_EDGE, ARC_ACROSS = 0.05, 0.9, 1.5
 #: No arc is taken for an image of the ball smaller than this radius (px): there ``ARC_PX`` and
 #: ``ARC_ACROSS`` are so large a share of it that a ball of 1.5 times the radius given (a
@@ -164,13 +166,16 @@ class Colours(NamedTuple):
 class Blob(NamedTuple):
     """A blob: centre (u, v) and area (filled, weighted) in px; whether it touches a pixel
     outside the allowed region or the window's cut by the image's edge; whether it runs out
-    of the window (its area and centre are then not its own)."""
+    of the window (its area and centre are then not its own); the radius (px) of the ball's
+    part, lit or shaded, in the circle through its outline where that circle is confirmed
+    all round (`turntable.video.limb.disc_radius`), else nan."""
 
     u: float
     v: float
     area: float
     touches: bool
     cut: bool = False
+    disc: float = math.nan
 
 
 def blobs(
@@ -221,13 +226,16 @@ def blobs(
             or (y + h + v0 >= height)
         )
         centre = np.array([(wt * uu).sum(), (wt * vv).sum()]) / total
+        disc = math.nan
         if outline and ROUND_AREA[0] < total / (math.pi * outline**2) < ROUND_AREA[1]:
             edge = colour.edge_share(lab_img, share)
             centre, arc = _outline(edge, centre, outline, centre)
             if arc:  # its shadow left out: the blob's weight within the ball's circle
                 total = float(wt[np.hypot(uu - centre[0], vv - centre[1]) < outline + ARC_PX].sum())
+            if _round(edge, centre, outline, 48, limb=True):
+                disc = limb_module.disc_radius(edge, centre, outline, threshold)
         cut = x == 0 or y == 0 or x + w >= mask.shape[1] or y + h >= mask.shape[0]
-        out.append(Blob(float(centre[0]) + u0, float(centre[1]) + v0, total, touches, cut))
+        out.append(Blob(float(centre[0]) + u0, float(centre[1]) + v0, total, touches, cut, disc))
     return out
 
 
@@ -327,7 +335,7 @@ def _outline(share, start, radius: float, fallback, rays: int = 48, min_points: 
     if got is None or not got[1]:
         return (None, False) if got is None else got
     got = _outline_fit(share, got[0], radius, None, rays, min_points, ARC_MIN)
-    if got is None or not _edge_all_round(share, got[0], radius, rays):
+    if got is None or not _round(share, got[0], radius, rays, limb=True):
         return fallback, False
     return got[0], True
 
@@ -443,14 +451,11 @@ def _fit_outline(pts, weight, start, radius: float, fallback, min_points: int, a
     return plain if centre is None else (centre, True)
 
 
-def _edge_all_round(share, centre, radius: float, rays: int) -> bool:
-    """Whether the share falls outward across the circle on `ARC_EDGE` of the rays."""
-    a = np.linspace(0.0, 2 * math.pi, rays, endpoint=False)
-    r = radius + np.array([-ARC_ACROSS, ARC_ACROSS])
-    pu = (centre[0] + np.cos(a)[:, None] * r).astype(np.float32)
-    pv = (centre[1] + np.sin(a)[:, None] * r).astype(np.float32)
-    prof = cv2.remap(share, pu, pv, cv2.INTER_LINEAR, borderMode=cv2.BORDER_REPLICATE)
-    return float(np.mean(prof[:, 0] - prof[:, 1] >= ARC_STEP)) >= ARC_EDGE
+def _round(share, centre, radius: float, rays: int, limb: bool) -> bool:
+    """Whether the share falls outward across the circle on `ARC_EDGE` of the rays, or, with
+    ``limb``, crosses the ball's shaded limb (`turntable.video.limb.confirmed`)."""
+    prof = limb_module.across(share, centre, radius, rays, ARC_ACROSS)
+    return float(np.mean(limb_module.confirmed(prof, ARC_STEP, limb))) >= ARC_EDGE
 
 
 def _support(pts, weight, centre, radius: float) -> float:

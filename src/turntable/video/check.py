@@ -68,6 +68,15 @@ SMOOTH_R, SMOOTH_S, SMOOTH_FRAMES = 0.06, 0.05, 2.5
 #: MuJoCo's scenes; 0.77 where a small white ball's shaded limb, darker than the platter, was
 #: left out and its centre taken from its lit side.
 BALL_SIZE = (0.8, 1.4)
+#: A ball whose blob is its lit part only (`turntable.video.limb`): its size is that of its
+#: part, lit or shaded, in the circle through its outline, where that circle is confirmed all
+#: round on this share of the frames it is found on at least (else its blob's area, which a
+#: ball larger than predicted keeps).  Not for an image of the ball smaller than
+#: ``DISC_MIN_PX`` in radius (px): an outline seen on the lit side only lies ~0.9 px inside the
+#: ball's edge (unseen.py's ``720p60_r5_P017_tilt30``: the median of its 17 rays of 48 that
+#: weigh), and the circle of the ball's radius through it is as far off, more than the 0.06 R
+#: of ``SMOOTH_R`` below 15 px (0.12 R there, at 10 px).
+DISC_FRAMES, DISC_MIN_PX = 0.5, 15.0
 #: What each check says when it fails, and the option that helps.
 HELP = {
     "rate": "it may not be the mark: give --mark-at U,V (or check --rpm)",
@@ -195,6 +204,10 @@ def _ball_size(s: _Seen) -> _Result:
     ball = s.paths.ball[s.seen]
     predicted = float(np.median(camera.image_radius(s.cal.pose, ball, s.ball_radius)))
     measured = math.sqrt(float(np.nanmedian(s.paths.ball_area)) / math.pi)
+    disc = np.zeros(0) if s.paths.ball_disc is None else s.paths.ball_disc[s.seen]
+    confirmed = disc.size > 0 and np.mean(np.isfinite(disc)) >= DISC_FRAMES
+    if measured < BALL_SIZE[0] * predicted and confirmed and predicted >= DISC_MIN_PX:
+        measured = max(measured, float(np.nanmedian(disc)))
     ratio = measured / predicted
     says = (
         f"the ball's image is {2 * measured:.3g} px across, a ball of the given radius there "

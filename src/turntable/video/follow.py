@@ -72,7 +72,8 @@ TURN_AGREE, TURN_SEEN = (0.4, 2.5), 0.03
 class Paths(NamedTuple):
     """What following gives: per frame, the time (s), the ball's centre, its area (px) and
     the mark's centre (px, nan where not measured); the rim's points and how many frames they
-    come from."""
+    come from; per frame, the radius (px) of the ball's part, lit or shaded, in the circle
+    through its outline (`turntable.video.blobs.Blob`'s ``disc``), if measured."""
 
     t: NDArray[np.float64]
     ball: NDArray[np.float64]
@@ -80,6 +81,7 @@ class Paths(NamedTuple):
     mark: NDArray[np.float64]
     rim_points: NDArray[np.float64]
     rim_frames: int
+    ball_disc: NDArray[np.float64] | None = None
 
 
 class Seeds(NamedTuple):
@@ -277,6 +279,7 @@ class _Run:
         self.ball = _State(np.array([found.ball.u, found.ball.v]))
         self.mark = _Turning(np.array([found.mark.u, found.mark.v]), rim, found.mark_rate)
         self.times, self.ball_uv, self.areas, self.mark_uv = [], [], [], []
+        self.discs: list[float] = []
         self.rim_pts = [rim_points]
         self.allowed = None
         self.ball_colour: Colour | Colours | None = None
@@ -311,6 +314,7 @@ class _Run:
                 state.found(np.array([blob.u, blob.v]), blob.area, t)
         self.ball_uv.append((math.nan, math.nan) if got is None else (got.u, got.v))
         self.areas.append(math.nan if got is None else got.area)
+        self.discs.append(math.nan if got is None else got.disc)
         self.mark_uv.append((math.nan, math.nan) if m is None else (m.u, m.v))
         # a seed where nothing is found, or one of them lost for longer than a gap can be
         _check_seeded(seeds, index, got, m, found, picture)
@@ -326,6 +330,7 @@ class _Run:
             np.array(self.mark_uv).reshape(-1, 2),
             np.vstack(self.rim_pts),
             len(self.rim_pts),
+            np.array(self.discs),
         )
 
 

@@ -258,10 +258,11 @@ def test_a_ball_seen_by_its_lit_part_is_judged_by_its_circle_where_that_is_sure(
 ) -> None:
     """A ball whose blob is its lit part, 0.74 of its radius (``radial_tape_dark``): refused
     by its blob's area.  Where the circle through its outline is confirmed all round on
-    every frame, 0.9 of it covered lit or shaded, its size is that (passed), but not on a
-    third of the frames only, nor for an image smaller than ``DISC_MIN_PX`` (this one, ~6 px:
-    there its one-sided outline moves its centre by more than the scatter check allows), nor
-    for a ball larger than predicted, which its blob's area shows."""
+    every frame, 0.9 of it covered lit or shaded, its size is that (passed), but not on 85 %
+    of the frames only (the others' centres fall back), nor for an image smaller than
+    ``DISC_MIN_PX`` (this one, ~6 px: there its one-sided outline moves its centre by more
+    than the scatter check allows), nor for a ball larger than predicted, which its blob's
+    area shows."""
     from test_video import PLATTER, RADIUS
 
     track, run = tracked
@@ -275,8 +276,8 @@ def test_a_ball_seen_by_its_lit_part_is_judged_by_its_circle_where_that_is_sure(
     monkeypatch.setattr(check, "DISC_MIN_PX", 0.5 * r_px)
     assert run(area=small, disc=disc)["ball_size"]["passed"]
     assert check.first_failure(run(area=small, disc=disc)) is None
-    third = np.where(np.arange(frames) % 3 == 0, disc, np.nan)
-    assert not run(area=small, disc=third)["ball_size"]["passed"]
+    most = np.where(np.arange(frames) % 20 < 17, disc, np.nan)
+    assert not run(area=small, disc=most)["ball_size"]["passed"]
     large = np.full(frames, math.pi * (1.5 * r_px) ** 2)
     assert not run(area=large, disc=disc)["ball_size"]["passed"]
 

@@ -15,7 +15,7 @@ camera that the rim alone gives.  What tells them apart is how they move:
 Two candidates that could each be the ball are refused, as is a scene with no mark: the seeds
 ``--ball-at U,V`` and ``--mark-at U,V`` (pixels of the first frame) then say which is which.
 A ball of nearly the platter's colour, of which only a crescent differs from the platter
-(`CRESCENT_HINT`), is refused as such, seeded or not: no seed would help.
+(``CRESCENT_HINT``), is refused as such, seeded or not: no seed would help.
 """
 
 from __future__ import annotations

@@ -3,7 +3,7 @@
 Each is looked for in a window about where its last steps predict it (the mark along its
 circle about the rim's centre), as a blob of its own colour (`turntable.video.blobs`) of
 about its own size; a ball whose blob runs into a label of a like colour, by its
-outline; a ball of two colours (`ball_colours`), by both.  Where the mark passes next to
+outline; a ball of two colours (``ball_colours``), by both.  Where the mark passes next to
 the ball, so that their images may touch, neither is measured on that frame; a frame where
 the ball is not found is a gap, never a guessed position.  The rim's points are collected
 on ``RIM_FRAMES`` frames spread over the video.

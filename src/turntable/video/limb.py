@@ -4,7 +4,7 @@ seen on its lit side only.  The circle of the ball's radius through that arc is 
 where, on the rest of the circle, the ball's shaded limb lies inside it: darker than the
 platter, away from the ball's lit colour (a negative share, `turntable.video.blobs`), as a
 platter, a shadow beside a smaller ball or a label is not.  Its size is then that of the
-circle's part the ball covers, lit or shaded (`disc_radius`), not the lit blob's area.
+circle's part the ball covers, lit or shaded (``disc_radius``), not the lit blob's area.
 """
 
 from __future__ import annotations

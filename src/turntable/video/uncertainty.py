@@ -50,9 +50,9 @@ __all__ = [
 #: A systematic part dominates where it is more than this times the statistical one.
 DOMINANT = 1.0
 #: The tracker's smooth error: rms (ball radii) and correlation length (platter radii).  The
-#: rms is the upper 90 % limit that the coefficients of 73 rendered videos allow
-#: (``benchmarks/tracker_error.py``; its most likely value 0.0011); the length is where the
-#: least rms explains them.
+#: rms lies between the most likely value and the upper 90 % limit that the coefficients of
+#: the benchmark's rendered videos give (``benchmarks/tracker_error.py``); the length is where
+#: the least rms explains them.
 TRACKER_ERROR, TRACKER_LENGTH = 0.0018, 0.1
 #: Frames of the tracker's covariance computed at once (memory: this times the frames).
 _CHUNK = 256

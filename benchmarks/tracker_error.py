@@ -33,15 +33,16 @@ SIGMA_RANGE = (1e-6, 0.05)
 
 
 def videos(results: dict) -> dict[str, tuple[float, float, float, float]]:
-    """name: (d, s, u, true / fitted) of every tracked video whose coefficient is not at a bound."""
+    """name: (d, s, u, true / fitted) of every tracked video whose coefficient is not at a
+    bound, u from the field's rms the benchmark ran with."""
     rows = {f"{r['family']}_{i}": r for i, r in enumerate(results["video"]["rows"])}
     rows |= {r["case"]: r for r in results["unseen"]["rows"]}
     out = {}
     for name, r in rows.items():
-        if not r["tracked"] or r.get("at_bound", True) or not r["fitted"] > 0:
+        if not r["tracked"] or r.get("at_bound", True) or "tracker_error" not in r:
             continue
         stat, cal = r["stderr_statistical"] / r["fitted"], r["stderr_calibration"] / r["fitted"]
-        u = r["stderr_tracker"] / r["fitted"] / TRACKER_ERROR
+        u = r["stderr_tracker"] / r["fitted"] / r["tracker_error"]
         out[name] = (math.log(r["fitted"] / r["coefficient"]), math.hypot(stat, cal), u,
                      r["coefficient"] / r["fitted"])  # fmt: skip
     return out
@@ -71,6 +72,11 @@ def z(video, sigma: float) -> float:
 
 def main() -> None:
     data = videos(json.loads((ROOT / "results/benchmarks.json").read_text()))
+    if len(data) < 2:
+        sys.exit(
+            "tracker_error.py: fewer than 2 videos with the tracker's part in "
+            "results/benchmarks.json: run benchmarks/video.py and benchmarks/unseen.py"
+        )
     sigma, upper = estimate(list(data.values()))
     inside = np.array([z(v, TRACKER_ERROR) for v in data.values()])
     alone = {n: z(v, estimate([w for m, w in data.items() if m != n])[0]) for n, v in data.items()}

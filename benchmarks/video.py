@@ -55,7 +55,7 @@ from turntable.config import validate
 from turntable.video.decode import VideoError
 from turntable.video.render import Scene, render_video
 from turntable.video.track import track_video
-from turntable.video.uncertainty import carry
+from turntable.video.uncertainty import TRACKER_ERROR, carry
 
 PLATTER = 0.15
 RPM = 100.0 / 3.0
@@ -333,6 +333,7 @@ def measure(truth: dict[str, Any], path: Path, truth_file: Path) -> dict[str, An
         "stderr_statistical": stat,
         "stderr_calibration": parts[truth["model"]][f"{name}_stderr_calibration"],
         "stderr_tracker": parts[truth["model"]][f"{name}_stderr_tracker"],
+        "tracker_error": TRACKER_ERROR,
         "at_bound": own.bound is not None,
         "lens_measured": cal.lens.measured,
         "z": z,

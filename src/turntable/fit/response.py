@@ -79,6 +79,11 @@ def coefficient_influence(
     model : str
     fit_omega, fit_axis : bool
         As in `fit_model`.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (n, 2), 1/m: zero where the coefficient is held at an end of its range.
     """
     lay = _layout(model, fit_omega, fit_axis)
     setup = check_setup(setup)

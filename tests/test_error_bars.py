@@ -43,6 +43,16 @@ def z_scores() -> np.ndarray:
     return np.array(z)
 
 
+def one_film(model: str) -> film.Film:
+    """A film of ``model`` (mu0 = 3 or delta = 0.05) from 5 cm, at rest (rolling: on the
+    no-slip constraint), seed 1."""
+    c = 3.0 if model == "slipping" else 0.05
+    z0 = film.state_from_si((0.05, 0.0), (0.0, 0.0), (0.0, 0.0), SETUP)
+    if model == "rolling_resistance":
+        z0 = tt.no_slip_state(z0, SETUP.k)
+    return fit.simulate_film(model, c, z0, SETUP, CAMERA, seed=1)
+
+
 @pytest.fixture(scope="module")
 def z() -> np.ndarray:
     return z_scores()
@@ -71,11 +81,7 @@ def test_the_linear_response_of_the_coefficient_is_that_of_a_refit(model: str) -
     does, within 5 % of the change."""
     from turntable.fit.response import coefficient_response
 
-    c = 3.0 if model == "slipping" else 0.05
-    z0 = film.state_from_si((0.05, 0.0), (0.0, 0.0), (0.0, 0.0), SETUP)
-    if model == "rolling_resistance":
-        z0 = tt.no_slip_state(z0, SETUP.k)
-    data = fit.simulate_film(model, c, z0, SETUP, CAMERA, seed=1)
+    data = one_film(model)
     stretched = data._replace(x=1.002 * data.x, y=1.002 * data.y)
     delayed = data._replace(t=data.t + 0.001 * (data.y - data.y.min()) / np.ptp(data.y))
     variants = [(stretched, SETUP._replace(omega=1.0005 * SETUP.omega)), (delayed, SETUP)]
@@ -94,11 +100,7 @@ def test_the_influence_of_each_position_is_that_of_a_refit(model: str) -> None:
     change."""
     from turntable.fit.response import coefficient_influence
 
-    c = 3.0 if model == "slipping" else 0.05
-    z0 = film.state_from_si((0.05, 0.0), (0.0, 0.0), (0.0, 0.0), SETUP)
-    if model == "rolling_resistance":
-        z0 = tt.no_slip_state(z0, SETUP.k)
-    data = fit.simulate_film(model, c, z0, SETUP, CAMERA, seed=1)
+    data = one_film(model)
     options = {"fit_axis": model != "slipping"}
     move = 1e-4 * np.column_stack([np.sin(40 * data.y), np.cos(30 * data.x)])
     moved = data._replace(x=data.x + move[:, 0], y=data.y + move[:, 1])
@@ -145,11 +147,7 @@ def test_the_tracker_s_part_is_the_spread_of_refits_over_its_fields(model: str) 
     from turntable.fit.response import coefficient_influence
     from turntable.video import uncertainty as u
 
-    c = 3.0 if model == "slipping" else 0.05
-    z0 = film.state_from_si((0.05, 0.0), (0.0, 0.0), (0.0, 0.0), SETUP)
-    if model == "rolling_resistance":
-        z0 = tt.no_slip_state(z0, SETUP.k)
-    data = fit.simulate_film(model, c, z0, SETUP, CAMERA, seed=1)
+    data = one_film(model)
     track = SimpleNamespace(film=data, ball_radius=SETUP.radius, platter_radius=0.15)
     options = {"fit_axis": model != "slipping"}
     se = u.tracker_part(track, coefficient_influence(data, SETUP, model, **options))

@@ -12,9 +12,11 @@ import pytest
 cv2 = pytest.importorskip("cv2")
 
 from turntable.video import blobs, check  # noqa: E402
+from turntable.video.decode import VideoError  # noqa: E402
 from turntable.video.find import Found  # noqa: E402
 from turntable.video.follow import Paths  # noqa: E402
 from turntable.video.platter import find_platter  # noqa: E402
+from turntable.video.regions import Candidate  # noqa: E402
 
 DATA = Path(__file__).parent / "data"
 
@@ -642,3 +644,43 @@ def test_a_lens_the_mark_cannot_measure_is_not_known_and_says_so(k1: float, nois
     assert cal.derived["lens_k1"] == 0.0
     assert abs(k1) < 2 * cal.stderr["lens_k1"]
     assert cal.stderr["lens_k1"] == pytest.approx(math.hypot(cal.lens.k1, cal.lens.k1_stderr))
+
+
+def _ring_scene():
+    """A pose and regions of a ball 20 px across on a 120 px frame: whole, with a highlight,
+    a ring (a steel ball's shaded limb about its lit side of the platter's grey), a crescent."""
+    from turntable.video import camera
+    from turntable.video.regions import _shape
+
+    pose = camera.Pose(1000.0, 0.0, 0.0, (0.0, 0.0), 0.4, (120, 120))
+    v, u = np.mgrid[0:120, 0:120]
+    ball = np.hypot(u - 60, v - 60) < 20  # R = 8 mm at 0.4 m: 20 px
+    regions = {
+        "ball": ball,
+        "highlight": ball & ~(np.hypot(u - 66, v - 54) < 5),
+        "ring": ball & ~(np.hypot(u - 60, v - 60) < 15),
+        "crescent": (ball | (np.hypot(u - 52, v - 68) < 20)) & ~(np.hypot(u - 64, v - 56) < 19),
+    }
+    found = {}
+    for name, region in regions.items():
+        vv, uu = np.nonzero(region)
+        found[name] = Candidate(uu.mean(), vv.mean(), float(region.sum()), np.zeros(3), 30.0,
+                                *_shape(region.astype(np.uint8)))  # fmt: skip
+    return pose, found
+
+
+def test_a_ring_of_the_ball_s_size_is_refused_as_a_ball_of_the_platter_s_colour() -> None:
+    """A steel ball on a platter of grey 150 (MuJoCo): only its shaded limb differs, a ring.
+    It was refused with a line asking for seeds; the ring is now named, no seed asked for."""
+    from turntable.video.find import _choose_ball, _refuse_a_crescent, _ring
+
+    pose, found = _ring_scene()
+    assert [n for n, c in found.items() if _ring(c, pose, 0.008)] == ["ring"]
+    assert [n for n, c in found.items() if _choose_ball([c], pose, 0.008) is None] == [
+        "ring", "crescent"]  # fmt: skip
+    for name, says in (("ring", "is a ring, not whole"), ("crescent", "is a crescent")):
+        with pytest.raises(VideoError, match=says) as err:
+            _refuse_a_crescent([None, found[name]], pose, 0.008)
+        assert "differs too little from the platter" in str(err.value)
+        assert "--ball-at" not in str(err.value)
+    _refuse_a_crescent([found["ball"], found["highlight"]], pose, 0.008)

@@ -14,7 +14,7 @@ camera that the rim alone gives.  What tells them apart is how they move:
 
 Two candidates that could each be the ball are refused, as is a scene with no mark: the seeds
 ``--ball-at U,V`` and ``--mark-at U,V`` (pixels of the first frame) then say which is which.
-A ball of nearly the platter's colour, of which only a crescent differs from the platter
+A ball of nearly the platter's colour, of which only a crescent or a ring differs from the platter
 (``CRESCENT_HINT``), is refused as such, seeded or not: no seed would help.
 """
 
@@ -390,17 +390,31 @@ def _crescent(c: Candidate, pose: Pose, ball_radius: float) -> bool:
     return AREA_RANGE[0] < area < AREA_RANGE[1] and c.fill >= MIN_FILL and c.solidity < MIN_SOLIDITY
 
 
+def _ring(c: Candidate, pose: Pose, ball_radius: float) -> bool:
+    """Round and of a ball's area with its inside, but hollow: a ball's shaded limb about its
+    lit side of the platter's colour (`CRESCENT_HINT`)."""
+    area = c.area / max(c.fill, 1e-9) / _area_at(pose, (c.u, c.v), ball_radius)
+    round_ = c.elongation < MAX_ELONGATION and c.solidity >= MIN_SOLIDITY
+    return AREA_RANGE[0] < area < AREA_RANGE[1] and c.fill < MIN_FILL and round_
+
+
 def _refuse_a_crescent(others, pose, ball_radius) -> None:
-    """Refuse a ball of nearly the platter's colour: a crescent (`_crescent`) among the
-    candidates that move on their own (the others None)."""
+    """Refuse a ball of nearly the platter's colour: a crescent (`_crescent`) or a ring
+    (`_ring`) among the candidates that move on their own (the others None).  It is refused
+    where the first mark has no ball: the next mark pairs it wrong (a mark of 0.65 R, taken
+    for the ball, left the crescent turning slowly as a mark)."""
+    shapes = (
+        (_crescent, "a crescent, not round (a ball's shaded side and its shadow)"),
+        (_ring, "a ring, not whole (a ball's shaded limb)"),
+    )
     for c in others:
-        if c is not None and _crescent(c, pose, ball_radius):
-            raise VideoError(
-                f"no ball found on the first frame: what moves on its own at ({c.u:.0f}, "
-                f"{c.v:.0f}) px, of a ball's size, is a crescent, not round (a ball's shaded "
-                f"side and its shadow): {CRESCENT_HINT}",
-                [x for x in others if x is not None],
-            )
+        for test, shape in shapes:
+            if c is not None and test(c, pose, ball_radius):
+                raise VideoError(
+                    f"no ball found on the first frame: what moves on its own at ({c.u:.0f}, "
+                    f"{c.v:.0f}) px, of a ball's size, is {shape}: {CRESCENT_HINT}",
+                    [x for x in others if x is not None],
+                )
 
 
 def _on_plane(p: _Path, frames: int, pose: Pose) -> tuple[NDArray, NDArray] | None:

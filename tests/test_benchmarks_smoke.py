@@ -145,3 +145,34 @@ def test_the_tracker_s_error_is_estimated_from_the_videos_it_spreads() -> None:
             assert best == pytest.approx(sigma, rel=0.15)
         else:
             assert upper < 0.0015
+
+
+def test_the_video_benchmark_compares_positions_at_the_film_s_times() -> None:
+    """``benchmarks/video.py``: a rolling shutter's film is seen a row delay after each
+    frame's time, and its positions are compared with the truth at those times (the truth
+    file holds them at the middle of each frame's opening, checked to reproduce): a ball seen
+    0.5 frame intervals later (60 frames/s) is 0.03-0.07 R from where it was at the frame's
+    time, as much as the target of 0.05 R."""
+    from turntable import fit
+    from turntable.film import Setup
+
+    video = _load("video")
+    setup = Setup(0.008, 3.49, 0.4)
+    state0 = [7.0, 0.0, 0.0, 0.4, 0.0, 0.0]
+    t = np.arange(30) / 60.0
+    xy = fit.positions("slipping", 2.0, state0, t + 0.5 / 60 / 2, setup)  # shutter 0.5
+    true = {"t": t, "x": xy[:, 0], "y": xy[:, 1]}
+    truth = {"model": "slipping", "coefficient": 2.0, "state0": state0, "setup": setup,
+             "renderer": "turntable", "scene": {"fps": 60.0}}  # fmt: skip
+    keep = np.arange(1, 30, 2)
+    at_frames = video.truth_at(truth, true, keep, np.zeros(keep.size))
+    np.testing.assert_allclose(at_frames, (xy[:, 0] + 1j * xy[:, 1])[keep], rtol=0, atol=1e-12)
+    delay = np.full(keep.size, 0.5 / 60)
+    later = fit.positions("slipping", 2.0, state0, t[keep] + 0.5 / 60 / 2 + delay, setup)
+    seen = video.truth_at(truth, true, keep, delay)
+    np.testing.assert_allclose(seen, later[:, 0] + 1j * later[:, 1], rtol=0, atol=1e-12)
+    moved = np.abs(seen - at_frames) / setup.radius
+    assert moved.min() > 0.03
+    assert moved.max() < 0.07
+    with pytest.raises(ValueError, match="not reproduced"):
+        video.truth_at(truth | {"renderer": "mujoco"}, true, keep, delay)

@@ -19,6 +19,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from turntable.video import limb as limb_module
+from turntable.video import ring
 from turntable.video.decode import Picture, lab
 from turntable.video.robust import circle_centre, inliers
 
@@ -230,6 +231,7 @@ def blobs(
         if outline and ROUND_AREA[0] < total / (math.pi * outline**2) < ROUND_AREA[1]:
             edge = colour.edge_share(lab_img, share)
             centre, arc = _outline(edge, centre, outline, centre)
+            centre = ring.edge_centre(edge, centre, outline, centre)
             if arc:  # its shadow left out: the blob's weight within the ball's circle
                 total = float(wt[np.hypot(uu - centre[0], vv - centre[1]) < outline + ARC_PX].sum())
             if _round(edge, centre, outline, 48, limb=True):

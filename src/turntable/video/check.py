@@ -73,7 +73,8 @@ BALL_SIZE = (0.8, 1.4)
 #: round on ``DISC_FRAMES`` of the frames it is found on at least (else its blob's area, which
 #: a ball larger than predicted keeps): on the other frames its centre is a fallback (the lit
 #: part's centroid, 2-5 px off on unseen.py's ``1080p60_P010``, confirmed on 68 % of its
-#: frames and 0.078 R off; ``radial_tape_dark``: 93 %, 0.043 R).  Not for an image of the
+#: frames and 0.078 R off, before its dark ring centred it (`turntable.video.ring`: 99.7 %,
+#: 0.020 R); ``radial_tape_dark``: 93 %, 0.043 R).  Not for an image of the
 #: ball smaller than ``DISC_MIN_PX`` in radius (px): an outline seen on the lit side only lies
 #: ~0.9 px inside the ball's edge (unseen.py's ``720p60_r5_P017_tilt30``: the median of its
 #: 17 rays of 48 that weigh), and the circle of the ball's radius through it is as far off,

@@ -11,7 +11,7 @@ import pytest
 
 cv2 = pytest.importorskip("cv2")
 
-from turntable.video import blobs, check  # noqa: E402
+from turntable.video import blobs, check, shaded  # noqa: E402
 from turntable.video.find import Found  # noqa: E402
 from turntable.video.follow import Paths  # noqa: E402
 from turntable.video.platter import find_platter  # noqa: E402
@@ -331,6 +331,7 @@ def _shaded_ball(
     ball_rgb=(40, 160, 60),
     zenith_deg: float = 50.0,
     shadow: float = 0.4,
+    focal: float = 1000.0,
 ) -> tuple:
     """A green ball lit from one side, low (``zenith_deg``: 50 degrees from the zenith), on a
     grey platter with its shadow, drawn as `turntable.video.render` draws it (`_scene.sphere`:
@@ -341,12 +342,12 @@ def _shaded_ball(
     ball's): the label's edge runs through the ball's centre, so half of its outline borders
     it; or of the colour ``paper`` (RGB), its edge ``edge`` of R beyond the ball's centre.
     The ball is green unless ``ball_rgb`` says; its shadow takes ``shadow`` of the light off
-    the platter."""
+    the platter; its image is 20 px in radius, or as ``focal`` (px) makes it."""
     from turntable.video import _scene, camera
     from turntable.video.decode import Picture, lab, yuv420
 
     radius, size = 0.008, (96, 96)
-    pose = camera.Pose(1000.0, 0.0, 0.0, (0.0, 0.0), 0.4, size)
+    pose = camera.Pose(focal, 0.0, 0.0, (0.0, 0.0), 0.4, size)
     ball = np.array([0.0013, -0.0021, radius])
     light = np.array([math.cos(0.5), math.sin(0.5), 0.0]) * math.sin(math.radians(zenith_deg))
     light[2] = math.cos(math.radians(zenith_deg))
@@ -425,6 +426,26 @@ def test_a_white_ball_lit_from_the_side_on_grey_is_the_size_of_its_circle(zenith
     assert math.sqrt(got.area / math.pi) < check.BALL_SIZE[0] * r_px
     assert check.BALL_SIZE[0] + 0.05 < got.disc / r_px < 1.0
     assert np.hypot(got.u - centroid[0], got.v - centroid[1]) < 0.35
+
+
+@pytest.mark.parametrize("ambient", [0.3, 0.15])
+def test_a_small_white_ball_lit_from_the_side_is_centred_by_its_shaded_disc(ambient):
+    """`_shaded_ball`: a white ball on the mid-grey platter lit from 30 degrees off the zenith,
+    its image 10 px in radius (unseen.py's ``720p60_r5_P017_tilt30``: ~10.6 px).  Its lit
+    side fades to the platter's shade at its edge and its shaded side runs into its shadow:
+    the circle through its outline was 0.66-0.78 px off its silhouette's centre (0.07 R),
+    and its blob is 0.48-0.54 of its circle.  The shaded disc fitted to its image
+    (`turntable.video.shaded`) is centred within 0.3 px, and is its size within 3 %."""
+    picture, colour, platter, r_px, centroid = _shaded_ball(
+        ambient, ball_rgb=(240, 240, 235), zenith_deg=30.0, shadow=0.6, focal=500.0
+    )
+    assert 9.5 < r_px < 11.0
+    colour = blobs.Colour(colour, platter)
+    box = (slice(0, 96), slice(0, 96))
+    (got,) = blobs.blobs(picture, box, colour, np.ones((96, 96), bool), outline=r_px)
+    assert got.area < shaded.LIT_ONLY * math.pi * r_px**2
+    assert np.hypot(got.u - centroid[0], got.v - centroid[1]) < 0.3
+    assert abs(got.disc / r_px - 1.0) < 0.03
 
 
 def test_the_arc_of_a_white_ball_lit_from_the_side_is_confirmed_by_its_shaded_limb():

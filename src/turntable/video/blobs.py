@@ -21,6 +21,7 @@ from numpy.typing import NDArray
 from turntable.video import limb as limb_module
 from turntable.video.decode import Picture, lab
 from turntable.video.robust import circle_centre, inliers
+from turntable.video.shaded import small_ball
 
 try:
     import cv2
@@ -234,6 +235,7 @@ def blobs(
                 total = float(wt[np.hypot(uu - centre[0], vv - centre[1]) < outline + ARC_PX].sum())
             if _round(edge, centre, outline, 48, limb=True):
                 disc = limb_module.disc_radius(edge, centre, outline, threshold)
+            centre, disc = small_ball(picture, box, colour, share, centre, outline, total, disc)
         cut = x == 0 or y == 0 or x + w >= mask.shape[1] or y + h >= mask.shape[0]
         out.append(Blob(float(centre[0]) + u0, float(centre[1]) + v0, total, touches, cut, disc))
     return out

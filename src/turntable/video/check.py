@@ -40,6 +40,7 @@ from turntable.video.find import RATE_RANGE, Found
 from turntable.video.follow import Paths
 from turntable.video.platter import Ellipse, fit_ellipse
 from turntable.video.robust import circle_centre
+from turntable.video.shaded import SMALL_PX
 
 #: The mark's rate within this share of ``--rpm`` (a platter's rate is within 1 % of its
 #: setting).
@@ -79,7 +80,7 @@ BALL_SIZE = (0.8, 1.4)
 #: 17 rays of 48 that weigh), and the circle of the ball's radius through it is as far off,
 #: more than the 0.06 R of ``SMOOTH_R`` below 15 px (0.12 R there, at 10 px): there the size
 #: is the radius of the shaded disc fitted to the ball's image (`turntable.video.shaded`).
-DISC_FRAMES, DISC_MIN_PX = 0.9, 15.0
+DISC_FRAMES, DISC_MIN_PX = 0.9, SMALL_PX
 #: What each check says when it fails, and the option that helps.
 HELP = {
     "rate": "it may not be the mark: give --mark-at U,V (or check --rpm)",

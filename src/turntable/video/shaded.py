@@ -34,7 +34,7 @@ except ImportError:  # without the extra [video]
     cv2 = None
 
 #: Only an image of the ball smaller than this radius (px) is fitted: a larger one's outline
-#: is sharp enough (`turntable.video.check`'s ``DISC_MIN_PX``).
+#: is sharp enough (`turntable.video.check`'s ``DISC_MIN_PX`` is this).
 SMALL_PX = 15.0
 #: ... and only where its blob covers less than this share of its circle: its lit part only
 #: (0.59 on unseen.py's ``720p60_r5_P017_tilt30``; 0.79 and more on the good tracks of

@@ -165,12 +165,15 @@ def run(names: list[str], folder: Path) -> dict[str, Any]:
         )
         print(f"{name} ({truth['seed']}): {row['verdict']}: {what}", flush=True)
     count = {v: sum(r["verdict"] == v for r in rows) for v in ("right", "refused", "wrong")}
+    within = [r for r in rows if r["within_guide"]]
     return {
         "synthetic": True,
         "renderer": "mujoco",
         "thresholds": {"position_rms_radii": WRONG_RMS, "omega_relative": WRONG_OMEGA},
         "cases": len(rows),
         **count,
+        "within_guide": len(within),
+        "right_within_guide": sum(r["verdict"] == "right" for r in within),
         "refusals": {r["case"]: r["refusal"] for r in rows if r["verdict"] == "refused"},
         "wrong_cases": [r["case"] for r in rows if r["wrong"]],
         "rows": rows,
@@ -190,7 +193,8 @@ def main() -> None:
     merge_results(ROOT / "results/benchmarks.json", {"unseen": res})
     wrong = ": " + ", ".join(res["wrong_cases"]) if res["wrong"] else ""
     print(f"\n{res['cases']} cases: {res['right']} right, {res['refused']} refused, "
-          f"{res['wrong']} wrong{wrong}")  # fmt: skip
+          f"{res['wrong']} wrong{wrong}; within the filming guide {res['within_guide']}, of "
+          f"which {res['right_within_guide']} right")  # fmt: skip
     for name, line in res["refusals"].items():
         print(f"  refused {name}: {line}")
 

@@ -189,6 +189,17 @@ def _mujoco_rates(rng):
     return fields | {"size": (width, height), "fps": fps}, duration
 
 
+#: A ball and a platter of nearly its shade, which the filming guide rules out (a ball of the
+#: platter's colour): MuJoCo's steel ball on its mid-grey platter.
+NEAR_SHADE = [(GREYS["steel"], (150.0, 150.0, 155.0))]
+
+
+def within_guide(family: str, fields: dict[str, Any]) -> bool:
+    """Whether a video of ``family`` with the scene ``fields`` is filmed as the guide asks."""
+    pair = (fields.get("ball_rgba"), fields.get("platter_rgba"))
+    return FAMILIES[family][1] and pair not in [(rgba(b), rgba(p)) for b, p in NEAR_SHADE]
+
+
 #: name: (draw of the scene's fields and the duration, within the filming guide, renderer)
 FAMILIES = {
     "classic": (_classic, True, "turntable"),
@@ -224,7 +235,7 @@ def draw(
     initial distance from the axis (m; by default 4-9 cm times P / 15 cm) and fields of the
     scene (``fps`` also sets the frame rate at which the coefficient must be measurable).
     """
-    make, within, renderer = FAMILIES[family]
+    make, _, renderer = FAMILIES[family]
     fields, drawn = make(rng)
     fields |= scene or {}
     duration = duration or drawn
@@ -265,6 +276,7 @@ def draw(
         "platter_radius": platter,
         "clockwise": bool(rng.random() < 1 / 3),
     } | fields
+    within = within_guide(family, scene)
     return {"family": family, "within_guide": within, "renderer": renderer, "model": model,
             "coefficient": c, "state0": z0, "setup": setup, "scene": scene,
             "distinct": distinct, "seed": i}  # fmt: skip

@@ -176,3 +176,19 @@ def test_the_video_benchmark_compares_positions_at_the_film_s_times() -> None:
     assert moved.max() < 0.07
     with pytest.raises(ValueError, match="not reproduced"):
         video.truth_at(truth | {"renderer": "mujoco"}, true, keep, delay)
+
+
+def test_a_ball_of_the_platter_s_shade_is_outside_the_guide_in_both_video_benchmarks() -> None:
+    """A steel ball on MuJoCo's mid-grey platter is refused as a ball of the platter's
+    colour, which the filming guide rules out: the benchmarks count it outside the guide,
+    whether the family drew it or a case of ``unseen.py`` asked for it."""
+    sys.path.insert(0, str(BENCHMARKS))
+    video, unseen = _load("video"), _load("unseen")
+    steel, grey = unseen.STEEL, unseen.GREY
+    assert not video.within_guide("mujoco", {"ball_rgba": steel, "platter_rgba": grey})
+    assert video.within_guide("mujoco", {"ball_rgba": steel, "platter_rgba": unseen.DARK})
+    assert video.within_guide("mujoco", {"ball_rgba": unseen.WHITE, "platter_rgba": grey})
+    assert not video.within_guide("camouflage", {})
+    level = 0.05
+    assert not unseen.truth_of("steel_on_grey150", level)["within_guide"]
+    assert unseen.truth_of("base", level)["within_guide"]

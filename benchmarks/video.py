@@ -191,7 +191,7 @@ def _mujoco_rates(rng):
 
 #: A ball and a platter of nearly its shade, which the filming guide rules out (a ball of the
 #: platter's colour): MuJoCo's steel ball on its mid-grey platter.
-NEAR_SHADE = [(GREYS["steel"], (150.0, 150.0, 155.0))]
+NEAR_SHADE = [(GREYS["steel"], (150.0, 150.0, 155.0)), (GREYS["steel"], (190.0, 190.0, 195.0))]
 
 
 def within_guide(family: str, fields: dict[str, Any]) -> bool:

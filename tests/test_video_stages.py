@@ -477,6 +477,25 @@ def test_a_white_ball_lit_from_above_is_centred_where_its_dark_ring_meets_the_pl
     assert np.hypot(got.u - centroid[0], got.v - centroid[1]) < 0.5
 
 
+@pytest.mark.parametrize("given", [0.9, 0.95])
+def test_a_ringed_ball_of_another_radius_than_the_one_given_is_not_centred_by_its_ring(given):
+    """The ball lit from 5 degrees off the zenith, its radius given 5 or 10 % small: the
+    circle of the given radius through its ring's edge lay 2.6 px (0.07 R) off its centre,
+    and the size check passed it.  The ring's points, their radius free (1.025 of the ball's
+    here), tell the ball's own radius, and the ring is not used
+    (`turntable.video.ring.SIZE_AGREE`)."""
+    from turntable.video import ring
+
+    picture, colour, _, r_px, centroid, _ = _white_ball_on_grey(5.0, 0.3, focal=1750.0, side=160)
+    from turntable.video.decode import lab
+
+    share = colour.edge_share(lab(picture, (slice(0, 160), slice(0, 160))))
+    right = ring.edge_centre(share, centroid + 3.0, r_px, np.full(2, np.nan))
+    assert np.hypot(*(right - centroid)) < 0.5
+    wrong = ring.edge_centre(share, centroid + 3.0, given * r_px, np.full(2, np.nan))
+    assert np.isnan(wrong).all()
+
+
 @pytest.mark.parametrize("label", [0.75, 0.85, 0.9])
 def test_a_ball_on_a_label_of_a_like_colour_is_found_by_the_half_of_its_outline(label):
     """A ball rolling onto a label of a like colour: its blob runs into the label's, and half

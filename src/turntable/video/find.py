@@ -188,10 +188,12 @@ def find(
         if at is not None:
             seeded[option] = len(paths)
             c = _at_seed(option, at, look, lab0, pose, ball_radius, paths)
-            if option == "--ball-at" and _crescent(c, pose, ball_radius):
+            if option == "--ball-at" and (
+                _crescent(c, pose, ball_radius) or _ring(c, pose, ball_radius)
+            ):
                 raise VideoError(
-                    f"--ball-at {at[0]:g},{at[1]:g} is on a crescent, not round, of a ball's "
-                    f"size (a ball's shaded side and its shadow): {CRESCENT_HINT}",
+                    f"--ball-at {at[0]:g},{at[1]:g} is on a crescent or a ring of a ball's "
+                    f"size, not a whole ball (its shaded side or limb): {CRESCENT_HINT}",
                     [p.c for p in paths] + [c],
                 )
             paths.append(_Path(c, t0))

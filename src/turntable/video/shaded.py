@@ -8,9 +8,10 @@ small ball's 0.05 R.  Here the ball's image is fitted as a whole instead: a disc
 is that of a matte sphere, an ambient level plus a light from any direction
 (:math:`a + \\max(0, g \\cdot n)`, :math:`n` the sphere's normal), on the platter, averaged
 over each pixel (``SUPER`` samples a side) and blurred by ``BLUR`` px.  The shade is measured
-as the share of the step from the platter's colour to the ball's, in the picture's RGB (in
-which a renderer or a camera shades linearly, as CIELAB is not).  What lies outside the disc
-and darker than the platter (``SHADOW``) is a shadow, and is left out of the fit.  The fit
+as the share of the step from the platter's colour to the ball's, in the picture's RGB
+(nearer linear in the shading than CIELAB; a camera's gamma is not undone).  What lies
+outside the disc and darker than the platter (``SHADOW``) is a shadow, and is left out of
+the fit.  The fit
 starts from the best of a grid of centres about the outline's (``GRID``); the disc's radius
 is fitted too, and is the size ``turntable.video.check`` judges the ball by.
 
@@ -96,6 +97,8 @@ def small_ball(picture: Picture, box: tuple[slice, slice], colour, share: NDArra
     if not hasattr(colour, "target") or area >= LIT_ONLY * math.pi * radius**2:
         return centre, math.nan
     ball, platter = lab_to_rgb(colour.target), lab_to_rgb(colour.platter)
+    if np.allclose(ball, platter, atol=1e-3):
+        return centre, math.nan
     got = fit(rgb_share(_rgb(picture, box), ball, platter), centre, radius, share != 0)
     if got is None or got[2] > FIT_RMS:
         return centre, math.nan
@@ -168,7 +171,7 @@ def fit(
         sol = least_squares(residual, p0, bounds=(lo, hi), loss="soft_l1", f_scale=LOSS_SCALE)
     except (ValueError, np.linalg.LinAlgError):
         return None
-    if not sol.success:
+    if not sol.success or sol.active_mask[:3].any():
         return None
     return sol.x[:2], float(sol.x[2]), float(np.sqrt(np.mean(sol.fun**2)))
 

@@ -22,7 +22,6 @@ from turntable.video import limb as limb_module
 from turntable.video import ring
 from turntable.video.decode import Picture, lab
 from turntable.video.robust import circle_centre, inliers
-from turntable.video.shaded import small_ball
 
 try:
     import cv2
@@ -33,6 +32,7 @@ except ImportError:  # without the extra [video]
 THRESHOLD = 0.45
 #: In the band about a blob, the share below which a pixel does not count.
 FLOOR = 0.25
+
 #: Colours farther than this, in units of the step from the platter's colour to the
 #: target's, from the line between them have no share.
 OFF_LINE = 0.6
@@ -64,7 +64,8 @@ STEEP, MIN_FALL = 0.5, 0.1
 #: The clearest falls' depth is this percentile of the falls'; a fall shallower than
 #: ``1 / SHALLOW`` of it weighs in proportion.
 CLEAR_PERCENTILE, SHALLOW = 90, 2.0
-#: A blob is round, centred by its outline, where its area is within these factors of the circle's.
+#: A blob is taken as round, and centred by its outline, where its area is within these
+#: factors of the circle's.
 ROUND_AREA = (0.4, 2.5)
 #: A ball in a blob of a like colour (`merged_ball`): found by this many outline points at
 #: least (half of the rays), within this share of the radius of where it is predicted.
@@ -235,7 +236,6 @@ def blobs(
                 total = float(wt[np.hypot(uu - centre[0], vv - centre[1]) < outline + ARC_PX].sum())
             if _round(edge, centre, outline, 48, limb=True):
                 disc = limb_module.disc_radius(edge, centre, outline, threshold)
-            centre, disc = small_ball(picture, box, colour, share, centre, outline, total, disc)
         cut = x == 0 or y == 0 or x + w >= mask.shape[1] or y + h >= mask.shape[0]
         out.append(Blob(float(centre[0]) + u0, float(centre[1]) + v0, total, touches, cut, disc))
     return out

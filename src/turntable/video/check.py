@@ -40,7 +40,6 @@ from turntable.video.find import RATE_RANGE, Found
 from turntable.video.follow import Paths
 from turntable.video.platter import Ellipse, fit_ellipse
 from turntable.video.robust import circle_centre
-from turntable.video.shaded import SMALL_PX
 
 #: The mark's rate within this share of ``--rpm`` (a platter's rate is within 1 % of its
 #: setting).
@@ -75,13 +74,12 @@ BALL_SIZE = (0.8, 1.4)
 #: a ball larger than predicted keeps): on the other frames its centre is a fallback (the lit
 #: part's centroid, 2-5 px off on unseen.py's ``1080p60_P010``, confirmed on 68 % of its
 #: frames and 0.078 R off, before its dark ring centred it (`turntable.video.ring`: 99.7 %,
-#: 0.020 R); ``radial_tape_dark``: 93 %, 0.043 R).  For an image of the ball smaller than
-#: ``DISC_MIN_PX`` in radius (px) an outline seen on the lit side only lies
-#: ~0.9 px inside the ball's edge (unseen.py's ``720p60_r5_P017_tilt30``: the median of its
-#: 17 rays of 48 that weigh), and the circle of the ball's radius through it is as far off,
-#: more than the 0.06 R of ``SMOOTH_R`` below 15 px (0.12 R there, at 10 px): there the size
-#: is the radius of the shaded disc fitted to the ball's image (`turntable.video.shaded`).
-DISC_FRAMES, DISC_MIN_PX = 0.9, SMALL_PX
+#: 0.020 R); ``radial_tape_dark``: 93 %, 0.043 R).  Not for an image of the ball smaller than
+#: ``DISC_MIN_PX`` in radius (px): an outline seen on the lit side only lies ~0.9 px inside
+#: the ball's edge (unseen.py's ``720p60_r5_P017_tilt30``: the median of its 17 rays of 48
+#: that weigh), and the circle of the ball's radius through it is as far off, more than the
+#: 0.06 R of ``SMOOTH_R`` below 15 px (0.12 R there, at 10 px).
+DISC_FRAMES, DISC_MIN_PX = 0.9, 15.0
 #: What each check says when it fails, and the option that helps.
 HELP = {
     "rate": "it may not be the mark: give --mark-at U,V (or check --rpm)",
@@ -211,7 +209,7 @@ def _ball_size(s: _Seen) -> _Result:
     measured = math.sqrt(float(np.nanmedian(s.paths.ball_area)) / math.pi)
     disc = np.zeros(0) if s.paths.ball_disc is None else s.paths.ball_disc[s.seen]
     confirmed = disc.size > 0 and np.mean(np.isfinite(disc)) >= DISC_FRAMES
-    if measured < BALL_SIZE[0] * predicted and confirmed:
+    if measured < BALL_SIZE[0] * predicted and confirmed and predicted >= DISC_MIN_PX:
         measured = max(measured, float(np.nanmedian(disc)))
     ratio = measured / predicted
     says = (

@@ -190,7 +190,7 @@ def _mujoco_rates(rng):
 
 
 #: A ball and a platter of nearly its shade, which the filming guide rules out (a ball of the
-#: platter's colour): MuJoCo's steel ball on its mid-grey platter.
+#: platter's colour): MuJoCo's steel ball on its mid-grey or light grey platter.
 NEAR_SHADE = [(GREYS["steel"], (150.0, 150.0, 155.0)), (GREYS["steel"], (190.0, 190.0, 195.0))]
 
 
@@ -276,9 +276,8 @@ def draw(
         "platter_radius": platter,
         "clockwise": bool(rng.random() < 1 / 3),
     } | fields
-    within = within_guide(family, scene)
-    return {"family": family, "within_guide": within, "renderer": renderer, "model": model,
-            "coefficient": c, "state0": z0, "setup": setup, "scene": scene,
+    return {"family": family, "within_guide": within_guide(family, scene), "renderer": renderer,
+            "model": model, "coefficient": c, "state0": z0, "setup": setup, "scene": scene,
             "distinct": distinct, "seed": i}  # fmt: skip
 
 

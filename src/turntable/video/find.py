@@ -188,9 +188,7 @@ def find(
         if at is not None:
             seeded[option] = len(paths)
             c = _at_seed(option, at, look, lab0, pose, ball_radius, paths)
-            if option == "--ball-at" and (
-                _crescent(c, pose, ball_radius) or _ring(c, pose, ball_radius)
-            ):
+            if option == "--ball-at" and any(is_(c, pose, ball_radius) for is_, _ in _SHAPES):
                 raise VideoError(
                     f"--ball-at {at[0]:g},{at[1]:g} is on a crescent or a ring of a ball's "
                     f"size, not a whole ball (its shaded side or limb): {CRESCENT_HINT}",
@@ -400,17 +398,20 @@ def _ring(c: Candidate, pose: Pose, ball_radius: float) -> bool:
     return AREA_RANGE[0] < area < AREA_RANGE[1] and c.fill < MIN_FILL and round_
 
 
+#: What a ball of nearly the platter's colour shows, and how it is named.
+_SHAPES = (
+    (_crescent, "a crescent, not round (a ball's shaded side and its shadow)"),
+    (_ring, "a ring, not whole (a ball's shaded limb)"),
+)
+
+
 def _refuse_a_crescent(others, pose, ball_radius) -> None:
     """Refuse a ball of nearly the platter's colour: a crescent (`_crescent`) or a ring
     (`_ring`) among the candidates that move on their own (the others None).  It is refused
     where the first mark has no ball: the next mark pairs it wrong (a mark of 0.65 R, taken
     for the ball, left the crescent turning slowly as a mark)."""
-    shapes = (
-        (_crescent, "a crescent, not round (a ball's shaded side and its shadow)"),
-        (_ring, "a ring, not whole (a ball's shaded limb)"),
-    )
     for c in others:
-        for test, shape in shapes:
+        for test, shape in _SHAPES:
             if c is not None and test(c, pose, ball_radius):
                 raise VideoError(
                     f"no ball found on the first frame: what moves on its own at ({c.u:.0f}, "

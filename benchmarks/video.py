@@ -194,10 +194,37 @@ def _mujoco_rates(rng):
 NEAR_SHADE = [(GREYS["steel"], (150.0, 150.0, 155.0)), (GREYS["steel"], (190.0, 190.0, 195.0))]
 
 
-def within_guide(family: str, fields: dict[str, Any]) -> bool:
-    """Whether a video of ``family`` with the scene ``fields`` is filmed as the guide asks."""
+#: A ball of its label's colour (no channel differing by more than this, 0-1) is lost on the
+#: label, which the guide allows for less than `ON_LABEL_S` (s) at a time.
+SAME_COLOUR, ON_LABEL_S = 0.1, 0.5
+
+
+def within_guide(family: str, fields: dict[str, Any], t: np.ndarray, r: np.ndarray) -> bool:
+    """Whether a video of ``family`` with the scene ``fields``, its ball at ``r`` (m) from the
+    axis at times ``t`` (s), is filmed as the guide asks."""
     pair = (fields.get("ball_rgba"), fields.get("platter_rgba"))
-    return FAMILIES[family][1] and pair not in [(rgba(b), rgba(p)) for b, p in NEAR_SHADE]
+    return (
+        FAMILIES[family][1]
+        and pair not in [(rgba(b), rgba(p)) for b, p in NEAR_SHADE]
+        and not _stays_on_its_colour(family, fields, t, r)
+    )
+
+
+def _stays_on_its_colour(family: str, fields: dict[str, Any], t, r) -> bool:
+    """The ball's centre on a label of the ball's colour for `ON_LABEL_S` or longer."""
+    if FAMILIES[family][2] == "mujoco":
+        from mujoco_scene import MujocoScene
+
+        scene = MujocoScene(**fields)
+        ball, label = np.array(scene.ball_rgba[:3]), np.array(scene.label_rgba[:3])
+    else:
+        scene = Scene(**fields)
+        ball, label = np.array(scene.ball_colour) / 255, np.array(scene.label_colour) / 255
+    if scene.label_radius <= 0 or np.max(np.abs(ball - label)) > SAME_COLOUR:
+        return False
+    on = np.concatenate([[False], r < scene.label_radius * scene.platter_radius, [False]])
+    edges = np.flatnonzero(np.diff(on.astype(int)))
+    return any(t[b - 1] - t[a] >= ON_LABEL_S for a, b in zip(edges[::2], edges[1::2], strict=True))
 
 
 #: name: (draw of the scene's fields and the duration, within the filming guide, renderer)
@@ -276,7 +303,9 @@ def draw(
         "platter_radius": platter,
         "clockwise": bool(rng.random() < 1 / 3),
     } | fields
-    return {"family": family, "within_guide": within_guide(family, scene), "renderer": renderer,
+    t = np.linspace(0, duration + 0.01, 400)
+    guide = within_guide(family, scene, t, np.hypot(xy[:, 0], xy[:, 1]))
+    return {"family": family, "within_guide": guide, "renderer": renderer,
             "model": model, "coefficient": c, "state0": z0, "setup": setup, "scene": scene,
             "distinct": distinct, "seed": i}  # fmt: skip
 

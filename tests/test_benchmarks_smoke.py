@@ -185,10 +185,36 @@ def test_a_ball_of_the_platter_s_shade_is_outside_the_guide_in_both_video_benchm
     sys.path.insert(0, str(BENCHMARKS))
     video, unseen = _load("video"), _load("unseen")
     steel, grey = unseen.STEEL, unseen.GREY
-    assert not video.within_guide("mujoco", {"ball_rgba": steel, "platter_rgba": grey})
-    assert video.within_guide("mujoco", {"ball_rgba": steel, "platter_rgba": unseen.DARK})
-    assert video.within_guide("mujoco", {"ball_rgba": unseen.WHITE, "platter_rgba": grey})
-    assert not video.within_guide("camouflage", {})
+    t, off = np.linspace(0.0, 5.0, 501), np.full(501, 0.1)  # 10 cm from the axis
+    assert not video.within_guide("mujoco", {"ball_rgba": steel, "platter_rgba": grey}, t, off)
+    assert video.within_guide("mujoco", {"ball_rgba": steel, "platter_rgba": unseen.DARK}, t, off)
+    assert video.within_guide("mujoco", {"ball_rgba": unseen.WHITE, "platter_rgba": grey}, t, off)
+    assert not video.within_guide("camouflage", {}, t, off)
     level = 0.05
     assert not unseen.truth_of("steel_on_grey150", level)["within_guide"]
     assert unseen.truth_of("base", level)["within_guide"]
+
+
+RED, BLUE = (200 / 255, 30 / 255, 30 / 255, 1.0), (30 / 255, 80 / 255, 200 / 255, 1.0)
+
+
+@pytest.mark.parametrize(
+    ("family", "ball", "on_label_s", "within"),
+    [
+        pytest.param("mujoco", {"ball_rgba": RED}, 0.6, False, id="red-stays"),
+        pytest.param("mujoco", {"ball_rgba": RED}, 0.4, True, id="red-crosses"),
+        pytest.param("mujoco", {"ball_rgba": BLUE}, 2.0, True, id="blue-stays"),
+        pytest.param("specular", {"ball_colour": (200, 30, 30)}, 0.6, False, id="project-red"),
+    ],
+)
+def test_a_ball_that_stays_on_a_label_of_its_colour_is_outside_the_guide(
+    family, ball, on_label_s, within
+) -> None:
+    """The guide lets a ball cross a label of its colour, where it is lost, for less than
+    0.5 s; the ball's centre is on the 4.5 cm label for ``on_label_s``."""
+    sys.path.insert(0, str(BENCHMARKS))
+    video = _load("video")
+    t = np.linspace(0.0, 5.0, 501)
+    r = np.where((t >= 1.0) & (t < 1.0 + on_label_s), 0.03, 0.1)
+    fields = ball | {"label_radius": 0.3, "platter_radius": 0.15}
+    assert video.within_guide(family, fields, t, r) is within

@@ -283,6 +283,7 @@ def fit_command(args: argparse.Namespace, progress: Progress | None = None) -> i
         platter_radius=args.platter_radius,
         ball_at=args.ball_at,
         mark_at=args.mark_at,
+        last_frame=args.last_frame,
         units=args.units,
         track=args.track,
         progress=progress,

@@ -109,6 +109,7 @@ def fit_file(
     platter_radius: float | None = None,
     ball_at: tuple[float, float] | Sequence[Seed] | None = None,
     mark_at: tuple[float, float] | Sequence[Seed] | None = None,
+    last_frame: int | None = None,
     units: str = "m",
     track: str | None = None,
     progress: Progress | None = None,
@@ -141,6 +142,8 @@ def fit_file(
     ball_at, mark_at : tuple of float or list of Seed, optional
         A video's first frame: a pixel (u, v) on the ball, on the mark; or seeds on any
         frames (``turntable.video.seeds.Seed``), where following resumes.
+    last_frame : int, optional
+        A video's last frame to track (0 the first): the film ends there.
     units, track : str
         A Tracker export's units (``turntable.tracker.UNITS``) and track.
     progress : callable, optional
@@ -189,6 +192,7 @@ def fitted_film(
     platter_radius: float | None = None,
     ball_at: tuple[float, float] | Sequence[Seed] | None = None,
     mark_at: tuple[float, float] | Sequence[Seed] | None = None,
+    last_frame: int | None = None,
     units: str = "m",
     track: str | None = None,
     progress: Progress | None = None,
@@ -223,10 +227,12 @@ def fitted_film(
     if saved:
         from turntable.video.saved import read_track
 
-        if ball_at or mark_at:
+        given = [o for o, v in (("--ball-at", ball_at), ("--mark-at", mark_at),
+                                ("--last-frame", last_frame is not None)) if v]  # fmt: skip
+        if given:
             raise InputError(
-                f"--{'ball' if ball_at else 'mark'}-at: {path} is a track; a seed is for its "
-                "video (turntable track VIDEO --ball-at/--mark-at)"
+                f"{given[0]}: {path} is a track; it is for its video (turntable track VIDEO "
+                f"{given[0]})"
             )
         tracked, notes, tracked_rpm = read_track(path)
         _same_as_tracked(path, "--radius", radius, tracked.ball_radius, " m")
@@ -242,8 +248,8 @@ def fitted_film(
         from turntable.video.cli import track as track_video
 
         tracked, notes = track_video(
-            path, radius, platter_radius, rpm, {"ball_at": ball_at, "mark_at": mark_at},
-            progress=progress,
+            path, radius, platter_radius, rpm,
+            {"ball_at": ball_at, "mark_at": mark_at, "last_frame": last_frame}, progress=progress,
         )  # fmt: skip
     if video:
         for message in notes:

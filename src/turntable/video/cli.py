@@ -37,7 +37,8 @@ Track a ball on a turntable in a video and write the film that `turntable fit` r
 The first frame must show the whole platter, in contrast with what surrounds it, the ball
 in contrast with the platter (by colour or brightness), and a small mark on the platter near
 its rim.  Where the search cannot tell which is which, --ball-at and --mark-at say it;
-where the ball or the mark is lost, --ball-at N:U,V and --mark-at N:U,V resume from frame N.
+where the ball or the mark is lost, --ball-at N:U,V and --mark-at N:U,V resume from frame N,
+and --last-frame N ends the film at frame N.
 Writes FILM.csv (t, x, y: s from the first frame, by the container's
 timestamps; the ball's centre in m, in the lab frame, the axis at the origin, the platter
 turning counterclockwise) and FILM.json (camera, Omega, metres per pixel, the image of the
@@ -90,7 +91,11 @@ def add_video_options(p: argparse.ArgumentParser, radius: str | None) -> None:
     if radius:
         p.add_argument(radius, type=float, required=True, metavar="R", help="ball radius, m")
     p.add_argument(
-        "--platter-radius", type=float, metavar="P", help="radius of the platter's rim, m"
+        "--platter-radius",
+        type=float,
+        required=bool(radius),
+        metavar="P",
+        help="radius of the platter's rim, m",
     )
     for option, what in (("--ball-at", "ball"), ("--mark-at", "mark")):
         p.add_argument(
@@ -101,6 +106,12 @@ def add_video_options(p: argparse.ArgumentParser, radius: str | None) -> None:
             help=f"a pixel on the {what} in the video's frame N (0, the first, by default); "
             "again for another frame, where it was lost",
         )
+    p.add_argument(
+        "--last-frame",
+        type=int,
+        metavar="N",
+        help="the last frame to track (0 the first), as Tracker's end frame: the film ends there",
+    )
 
 
 def track(
@@ -108,14 +119,14 @@ def track(
     ball_radius: float,
     platter_radius: float,
     rpm: float | None,
-    seeds: dict[str, Any] | None = None,
+    frames: dict[str, Any] | None = None,
     plot: str | None = None,
     progress: Progress | None = None,
 ):
     """Track (`turntable.video.track.track_video`); return (track, warnings).
 
-    ``seeds``: ball_at, mark_at.  A video that cannot be tracked raises `InputError` (with
-    ``plot``, what was found is drawn first).
+    ``frames``: ball_at, mark_at (the seeds) and last_frame.  A video that cannot be tracked
+    raises `InputError` (with ``plot``, what was found is drawn first).
     """
     try:
         import av  # noqa: F401
@@ -132,7 +143,7 @@ def track(
         raise InputError(f"--platter-radius {platter_radius:g} m must exceed the ball's radius")
     try:
         return track_video(
-            video, ball_radius, platter_radius, rpm, **(seeds or {}), progress=progress
+            video, ball_radius, platter_radius, rpm, **(frames or {}), progress=progress
         )
     except VideoError as exc:
         if plot is not None and exc.found is not None:
@@ -184,8 +195,6 @@ def track_command(args: argparse.Namespace, progress: Progress | None = None) ->
     """Run ``turntable track``; bad input raises `InputError`."""
     from turntable._plot_check import check_plot
 
-    if args.platter_radius is None:
-        raise InputError("the following arguments are required: --platter-radius")
     _check_number("--ball-radius", args.ball_radius)
     _check_number("--platter-radius", args.platter_radius)
     _check_number("--rpm", args.rpm)
@@ -202,7 +211,7 @@ def track_command(args: argparse.Namespace, progress: Progress | None = None) ->
         args.ball_radius,
         args.platter_radius,
         args.rpm,
-        {"ball_at": args.ball_at, "mark_at": args.mark_at},
+        {"ball_at": args.ball_at, "mark_at": args.mark_at, "last_frame": args.last_frame},
         args.plot,
         progress,
     )

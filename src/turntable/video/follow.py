@@ -388,8 +388,8 @@ def _refuse_at_the_edge(got: Blob | None, picture, r_px: float, index: int, t: f
             "the platter's rim" if _inside_image(got, picture.shape, r_px) else "the image's edge"
         )
         raise VideoError(
-            f"the ball reaches {where} at frame {index} (t = {t:.3f} s): cut the video before "
-            "it does"
+            f"the ball reaches {where} at frame {index} (t = {t:.3f} s): end the film before "
+            f"it does, --last-frame {index - 1}"
         )
 
 
@@ -463,8 +463,8 @@ def _give_up_or_refuse(state, name, later, index, t, found, ball, mark) -> None:
     raise VideoError(
         f"the {name} is lost at frame {frame} (t = {at:.3f} s) and not found for "
         f"{state.misses} frames ({t - at:.2g} s): give {_option(name)} {frame}:U,V, a pixel "
-        f"on it in frame {frame} (or in a later frame where it is seen); --plot draws frame "
-        f"{frame}",
+        f"on it in frame {frame} (or in a later frame where it is seen), or --last-frame "
+        f"{frame - 1} to end the film before it; --plot draws frame {frame}",
         LostAt(image, _seen_last(found, ball, mark), frame),
     )
 

@@ -4,6 +4,7 @@
 (``U,V`` alone: in the first frame, N = 0); each may be given more than once.  A seed in the
 first frame tells the search (`turntable.video.find`) which is which; a seed in a later frame
 resumes following (`turntable.video.follow`) from it, where the ball or the mark was lost.
+``--last-frame N`` ends the film at frame N, as Tracker's end frame.
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ __all__ = [
     "Seed",
     "after_first_frame",
     "check_frames",
+    "check_last_frame",
     "on_first_frame",
     "parse_seed",
     "seeds_of",
@@ -82,9 +84,9 @@ def seeds_of(value: tuple[float, float] | Iterable[Seed] | None) -> list[Seed]:
     return sorted(Seed(*s) for s in items)
 
 
-def check_frames(option: str, seeds: list[Seed], frames: int) -> None:
+def check_frames(option: str, seeds: list[Seed], frames: int, last: int | None = None) -> None:
     """Refuse two seeds in one frame, and a frame past the end of a video of ``frames``
-    frames (0: not known).
+    frames (0: not known) or after the last frame tracked, ``last``.
 
     Raises
     ------
@@ -100,6 +102,25 @@ def check_frames(option: str, seeds: list[Seed], frames: int) -> None:
                 f"{option} {s}: frame {s.frame} is past the end of the video "
                 f"(frames 0-{frames - 1})"
             )
+        if last is not None and s.frame > last:
+            raise ValueError(f"{option} {s}: frame {s.frame} is after --last-frame {last}")
+
+
+def check_last_frame(last: int | None, frames: int) -> None:
+    """Refuse a last frame before the second or past the end of a video of ``frames``
+    frames (0: not known).
+
+    Raises
+    ------
+    ValueError
+        One line naming --last-frame.
+    """
+    if last is None:
+        return
+    if last < 1:
+        raise ValueError(f"--last-frame {last}: must be 1 or more (0 is the first frame)")
+    if frames and last >= frames:
+        raise ValueError(f"--last-frame {last}: past the end of the video (frames 0-{frames - 1})")
 
 
 def on_first_frame(seeds: list[Seed]) -> tuple[float, float] | None:

@@ -34,6 +34,7 @@ from turntable.video.seeds import (
     Seed,
     after_first_frame,
     check_frames,
+    check_last_frame,
     on_first_frame,
     seeds_of,
 )
@@ -152,6 +153,7 @@ def track_video(
     ball_at: tuple[float, float] | Sequence[Seed] | None = None,
     mark_at: tuple[float, float] | Sequence[Seed] | None = None,
     progress: Progress | None = None,
+    last_frame: int | None = None,
 ) -> tuple[Track, list[str]]:
     """Track the ball of a video; return the track and the warnings (one line each).
 
@@ -170,6 +172,8 @@ def track_video(
     progress : callable, optional
         Called as ``progress("tracking", frames read, frames of the video)`` for each frame
         read (the total None when the container does not say).
+    last_frame : int, optional
+        The last frame to track (0 the first), as Tracker's end frame: the film ends there.
 
     Returns
     -------
@@ -182,8 +186,8 @@ def track_video(
         A video that cannot be read or has no frame, no platter, no ball or no mark on its
         first frame, a ball that reaches the platter's rim or the image's edge, a mark lost
         in nearly every frame or lost for longer than a gap can be, a seed on nothing or past
-        the video's end, a failed check (`turntable.video.check`).  Its ``found`` is the
-        `FirstLook`, for drawing.
+        the video's end or ``last_frame``, a ``last_frame`` past the video's end, a failed
+        check (`turntable.video.check`).  Its ``found`` is the `FirstLook`, for drawing.
 
     See Also
     --------
@@ -212,27 +216,35 @@ def track_video(
     """
     ball_at, mark_at = seeds_of(ball_at), seeds_of(mark_at)
     with Video(path) as video:
-        _check_seeds(video.info, ball_at, mark_at)
+        info = _check_frames(video.info, ball_at, mark_at, last_frame)
+        frames = video.frames()
+        if last_frame is not None:
+            frames = itertools.takewhile(lambda frame: frame[0] <= last_frame, frames)
         try:
-            frames = counted(video.frames(), progress, "tracking", video.info.frames or None)
-            return _track(video, frames, ball_radius, platter_radius, rpm, ball_at, mark_at)
+            frames = counted(frames, progress, "tracking", info.frames or None)
+            got = _track(info, frames, ball_radius, platter_radius, rpm, ball_at, mark_at)
         except VideoError as exc:
             message = str(exc)
             if not message.startswith(video.info.path):
                 message = f"{video.info.path}: {message}"
             raise VideoError(message, exc.found) from None
+    # a container that does not count its frames: its end is known once read
+    _check_frames(video.info._replace(frames=got[0].times.size), [], [], last_frame)
+    return got
 
 
-def _check_seeds(info: VideoInfo, ball_at: list[Seed], mark_at: list[Seed]) -> None:
+def _check_frames(info: VideoInfo, ball_at: list[Seed], mark_at: list[Seed], last: int | None):
+    """The video's info, its frames counted up to ``last``; bad seeds or ``last`` refused."""
     try:
+        check_last_frame(last, info.frames)
         for option, given in (("--ball-at", ball_at), ("--mark-at", mark_at)):
-            check_frames(option, given, info.frames)
+            check_frames(option, given, info.frames, last)
     except ValueError as exc:
         raise VideoError(f"{info.path}: {exc}") from None
+    return info if last is None else info._replace(frames=last + 1)
 
 
-def _track(video, frames, ball_radius, platter_radius, rpm, ball_at, mark_at):
-    info = video.info
+def _track(info: VideoInfo, frames, ball_radius, platter_radius, rpm, ball_at, mark_at):
     first = next(frames, None)
     if first is None:
         raise VideoError("the video has no frame")

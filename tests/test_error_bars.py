@@ -94,6 +94,50 @@ def test_the_linear_response_of_the_coefficient_is_that_of_a_refit(model: str) -
 
 
 @pytest.mark.parametrize("model", fit.MODELS)
+def test_the_linear_response_of_the_residuals_is_that_of_a_refit(model: str) -> None:
+    """`fit_response`'s ln RSS against fitting again, on films whose positions are moved
+    by 0.3 mm (1.5 times the noise) by a smooth field over the platter, or over time:
+    within 5 % of the change of ln RSS, which is above 0.1."""
+    from turntable.fit.response import fit_response
+
+    data = one_film(model)
+    fields = [(np.sin(40 * data.y), np.cos(30 * data.x)), (np.sin(10 * data.t), np.cos(7 * data.t))]
+    variants = [(data._replace(x=data.x + 3e-4 * u, y=data.y + 3e-4 * v), SETUP) for u, v in fields]
+    options = {"fit_axis": model != "slipping"}
+    base = math.log(fit.fit_model(data, SETUP, model, **options).rss)
+    _, got = fit_response(data, SETUP, model, variants, **options)
+    for change, (other, setup) in zip(got, variants, strict=True):
+        refit = math.log(fit.fit_model(other, setup, model, **options).rss) - base
+        assert abs(refit) > 0.1
+        assert change == pytest.approx(refit, rel=0.05)
+
+
+def test_a_selection_the_camera_could_undo_is_not_decisive() -> None:
+    """The AICc difference's spread from the calibration, N |H_a - H_b| se for one
+    parameter: a decisive selection stays so where 2 of it leave 10, and not otherwise."""
+    from turntable.video.uncertainty import CalibrationPart, _selection_checked, selection_spread
+
+    data = one_film("slipping")
+    result = fit.fit_film(data, SETUP)
+    assert result.decisive
+    assert result.aicc_difference > 20
+    n, se = result.fits["slipping"].n_observations, 0.01
+    cov = np.diag([se**2, 0.0])
+    track = type("Track", (), {"calibration": type("Cal", (), {"covariance": cov})})
+    for h, decisive in ((0.2, True), (2.0, False)):
+        gap = (result.aicc_difference - 10) / (2 * n * se) * h  # h of the room below 10
+        parts = {
+            "slipping": CalibrationPart(0.0, {}, np.array([gap, 0.3])),
+            "rolling_resistance": CalibrationPart(0.0, {}, np.array([0.0, 0.3])),
+        }
+        spread = selection_spread(track, result, parts)
+        assert spread == pytest.approx(n * gap * se)
+        checked = _selection_checked(result, spread)
+        assert checked.decisive is decisive
+        assert ("calibration" in checked.reason) is not decisive
+
+
+@pytest.mark.parametrize("model", fit.MODELS)
 def test_the_influence_of_each_position_is_that_of_a_refit(model: str) -> None:
     """`coefficient_influence` against fitting again: positions moved by a smooth field of
     0.1 mm (a tracker's slow error) move ln c by sum(influence * move), within 5 % of the
@@ -120,9 +164,10 @@ def test_the_output_says_where_the_calibration_dominates() -> None:
         "slipping", 3.0, film.state_from_si((0.05, 0.0), (0, 0), (0, 0), SETUP), SETUP, CAMERA, 1
     )
     f = fit.fit_model(data, SETUP, "slipping")
-    small = CalibrationPart(0.5 * f.log_stderr, {"tilt": 0.5 * f.log_stderr, "readout": 0.0})
+    flat = np.zeros(3)
+    small = CalibrationPart(0.5 * f.log_stderr, {"tilt": 0.5 * f.log_stderr, "readout": 0.0}, flat)
     large = CalibrationPart(
-        2.0 * f.log_stderr, {"tilt": 0.1 * f.log_stderr, "lens_k1": 2.0 * f.log_stderr}
+        2.0 * f.log_stderr, {"tilt": 0.1 * f.log_stderr, "lens_k1": 2.0 * f.log_stderr}, flat
     )
     assert dominance_warning("slipping", f, small) is None
     assert dominance_warning("slipping", f, small, tracker=0.9 * f.log_stderr) is None

@@ -19,7 +19,7 @@ from turntable.fit.diagnose import (
     problems,
 )
 from turntable.fit.models import COEFFICIENT, MIN_DOF, _check_model, positions
-from turntable.fit.results import DECISIVE, NOISE_FACTOR, WHITENESS_Z, FilmFit
+from turntable.fit.results import DECISIVE, NOISE_FACTOR, SELECTION_Z, WHITENESS_Z, FilmFit
 
 
 def result_json(
@@ -81,7 +81,9 @@ def result_json(
                 "AICc = N ln(RSS/N) + 2 K + 2 K (K + 1) / (N - K - 1), K = p + 1; decisive "
                 f"from a difference of {DECISIVE:g}, unless the fit with Omega and the axis "
                 f"free contradicts the given ones (|z| > {CONSISTENCY_Z:g}) or selects the "
-                f"other model; no selection if N - K - 1 < {MIN_DOF}"
+                f"other model, or (of a video) the camera's calibration, {SELECTION_Z:g} of its "
+                f"standard errors away, would bring it below {DECISIVE:g}; no selection if "
+                f"N - K - 1 < {MIN_DOF}"
             ),
             "aicc_difference": finite_or_none(result.aicc_difference),
             "akaike_weights": {m: finite_or_none(w) for m, w in result.akaike_weights.items()},

@@ -7,6 +7,8 @@ into a coefficient's standard error with them (`turntable.video.uncertainty`).
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numpy.typing import NDArray
 
@@ -46,20 +48,47 @@ def coefficient_response(
     numpy.ndarray
         The change of ln c for each variant.
     """
+    return fit_response(film, setup, model, variants, fit_omega=fit_omega, fit_axis=fit_axis)[0]
+
+
+def fit_response(
+    film: Film,
+    setup: Setup,
+    model: str,
+    variants: list[tuple[Film, Setup]],
+    *,
+    fit_omega: bool = False,
+    fit_axis: bool = False,
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Return how ln c and ln RSS of a fit move, to first order, on each of ``variants``.
+
+    As `coefficient_response`; the residual sum of squares after the Gauss-Newton step,
+    RSS = |r + J step|^2, is that of the linearised refit.
+
+    Returns
+    -------
+    d_log_c, d_log_rss : numpy.ndarray
+        The changes of ln c and of ln RSS for each variant.
+    """
     lay = _layout(model, fit_omega, fit_axis)
     fitter, _, theta, _ = _least_squares(film, check_setup(setup), lay)
-    base = _gauss_newton_step(fitter, theta)[lay.i_c]
-    changes = []
+    base, base_rss = _gauss_newton_step(fitter, theta)
+    changes, rss = [], []
     for other, other_setup in variants:
         tau, xy = _dimensionless(other, check_setup(other_setup))
-        step = _gauss_newton_step(_Fitter(lay, tau, xy, other_setup), theta)
-        changes.append(step[lay.i_c] - base)
-    return np.array(changes)
+        step, other_rss = _gauss_newton_step(_Fitter(lay, tau, xy, other_setup), theta)
+        changes.append(step[lay.i_c] - base[lay.i_c])
+        rss.append(math.log(other_rss / base_rss))
+    return np.array(changes), np.array(rss)
 
 
-def _gauss_newton_step(fitter: _Fitter, theta: NDArray[np.float64]) -> NDArray[np.float64]:
-    """The least-squares step -J^+ r of ``fitter`` from ``theta``."""
-    return np.linalg.lstsq(fitter.jacobian(theta), -fitter.residuals(theta), rcond=None)[0]
+def _gauss_newton_step(
+    fitter: _Fitter, theta: NDArray[np.float64]
+) -> tuple[NDArray[np.float64], float]:
+    """The least-squares step -J^+ r of ``fitter`` from ``theta``, and |r + J step|^2."""
+    jac, res = fitter.jacobian(theta), fitter.residuals(theta)
+    step = np.linalg.lstsq(jac, -res, rcond=None)[0]
+    return step, float(np.sum((res + jac @ step) ** 2))
 
 
 def coefficient_influence(

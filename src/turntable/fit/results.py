@@ -23,6 +23,10 @@ Z95 = NormalDist().inv_cdf(0.975)
 #: AICc differences of at least this much are decisive (Burnham and Anderson: above 10,
 #: essentially no support for the other model).
 DECISIVE = 10.0
+#: A video's selection is decisive where its AICc difference, less this many of its standard
+#: errors from the camera's calibration, is still decisive: as the coefficients' error bars
+#: are read (``turntable.video.uncertainty``).
+SELECTION_Z = 2.0
 #: Residuals count as not white when their lag-1 autocorrelation exceeds this many times
 #: its spread :math:`1 / \sqrt{\mathrm{pairs}}` for white noise (false alarm about 3e-5 for white
 #: noise).
@@ -365,7 +369,8 @@ class FilmFit(NamedTuple):
         (nan if an AICc is undefined).
     decisive : bool
         Whether a model is selected with an AICc difference of at least `DECISIVE` and
-        fits the film at least as well as the other (a smaller or equal RSS).
+        fits the film at least as well as the other (a smaller or equal RSS); of a video,
+        also with its camera's calibration moved (``turntable.video.uncertainty``).
     reason : str
         Why the selection is not decisive ("" if it is).
 

@@ -8,7 +8,10 @@ of the calibration.  A fit's standard error sees only the scatter of the positio
 model; an error of the camera moves every position alike and is not in it.  The coefficient's
 part from the calibration is propagated linearly: G_j = d ln c / d theta_j, by central
 differences of the film made with the calibration's parameter j moved by +-1 of its standard
-errors (`turntable.fit.response.coefficient_response`), and se_cal(ln c) = sqrt(G C G^T).
+errors (`turntable.fit.response.fit_response`), and se_cal(ln c) = sqrt(G C G^T).  The AICc
+difference that selects a model moves with the camera too, by N (H_a - H_b) for the
+gradients H of ln RSS of the two models: a selection is decisive only where it stays so with
+the calibration ``SELECTION_Z`` (2) of its standard errors away (`selection_spread`).
 
 The tracker's positions also carry an error that changes smoothly with where the ball is on
 the platter (its shading, its outline against what lies behind it).  A fit absorbs most of
@@ -32,7 +35,8 @@ from numpy.typing import NDArray
 
 from turntable.film import Film, Setup
 from turntable.fit import COEFFICIENT, FilmFit, ModelFit
-from turntable.fit.response import coefficient_influence, coefficient_response
+from turntable.fit.response import coefficient_influence, fit_response
+from turntable.fit.results import DECISIVE, SELECTION_Z
 from turntable.video import camera
 from turntable.video.calibrate import _At, camera_of
 
@@ -44,6 +48,7 @@ __all__ = [
     "CalibrationPart",
     "calibration_parts",
     "lens_note",
+    "selection_spread",
     "tracker_part",
 ]
 
@@ -83,10 +88,13 @@ class CalibrationPart(NamedTuple):
     parts : dict
         |G_j| se(theta_j) for each parameter of `PARAMETERS`: its share alone (the shares
         add in quadrature to ``stderr`` where the parameters are uncorrelated).
+    log_rss_gradient : numpy.ndarray
+        d ln RSS / d theta of the fit, by the calibration's parameters (`selection_spread`).
     """
 
     stderr: float
     parts: dict[str, float]
+    log_rss_gradient: NDArray[np.float64]
 
     @property
     def largest(self) -> str:
@@ -141,20 +149,21 @@ def calibration_parts(
     cov = cal.covariance
     se = {n: math.sqrt(max(cov[i, i], 0.0)) for n, i in PARAMETERS.items()}
     steps = {n: s for n, s in se.items() if s > 0}
-    change = coefficient_response(
+    change, rss = fit_response(
         track.film,
         setup,
         model,
         _variants(track, setup, omega_measured, steps),
         fit_omega=fit_omega,
         fit_axis=fit_axis,
-    ).reshape(-1, 2)
-    g = np.zeros(_At.SIZE)
-    for (name, step), (down, up) in zip(steps.items(), change, strict=True):
-        g[PARAMETERS[name]] = (up - down) / (2 * step)
+    )
+    g, g_rss = np.zeros(_At.SIZE), np.zeros(_At.SIZE)
+    for grad, moved in ((g, change), (g_rss, rss)):
+        for (name, step), (down, up) in zip(steps.items(), moved.reshape(-1, 2), strict=True):
+            grad[PARAMETERS[name]] = (up - down) / (2 * step)
     var = float(g @ cov @ g)
     parts = {n: abs(float(g[i])) * se[n] for n, i in PARAMETERS.items()}
-    return CalibrationPart(math.sqrt(max(var, 0.0)), parts)
+    return CalibrationPart(math.sqrt(max(var, 0.0)), parts, g_rss)
 
 
 def tracker_part(track, influence: NDArray[np.float64]) -> float:
@@ -284,4 +293,29 @@ def carry(
         for m in result.fits
     }
     notes = [dominance_warning(m, f, parts[m], tracker[m]) for m, f in result.fits.items()]
+    result = _selection_checked(result, selection_spread(track, result, parts))
     return widened(result, parts, tracker), summary(result, parts, tracker), [n for n in notes if n]
+
+
+def selection_spread(track, result: FilmFit, parts: dict[str, CalibrationPart]) -> float:
+    """The standard error of the AICc difference of ``result`` from the calibration:
+    sqrt(D C D^T), D = N (H_selected - H_other), H the gradients of ln RSS (0 where no
+    model is selected)."""
+    if result.selected is None:
+        return 0.0
+    other = next(m for m in result.fits if m != result.selected)
+    n = result.fits[result.selected].n_observations
+    d = n * (parts[result.selected].log_rss_gradient - parts[other].log_rss_gradient)
+    return math.sqrt(max(float(d @ track.calibration.covariance @ d), 0.0))
+
+
+def _selection_checked(result: FilmFit, spread: float) -> FilmFit:
+    """``result``, not decisive where the camera's uncertainty could undo its selection."""
+    if not result.decisive or result.aicc_difference - SELECTION_Z * spread >= DECISIVE:
+        return result
+    return result._replace(
+        decisive=False,
+        reason=f"the selection of {result.selected} is not decisive: the camera's calibration "
+        f"moves its AICc difference ({result.aicc_difference:.3g}) by +-{spread:.2g}, and "
+        f"{SELECTION_Z:g} of that would bring it below {DECISIVE:g}",
+    )

@@ -26,7 +26,8 @@ Each video is tracked as ``turntable track`` does (timed) and, if tracked, fitte
 best rotation about the axis (``rms_error_radii_frame_time``: at the frame's own time, which
 counts the ball's move over the row delay as an error).  A *confident wrong answer* is a
 video tracked with exit status 0 whose positions are off by more than `WRONG_RMS` ball radii
-(rms) or whose Omega is off by more than `WRONG_OMEGA`.
+(rms), whose Omega is off by more than `WRONG_OMEGA`, or whose fit selects the other model
+decisively where the two can be told apart (as ``benchmarks/unseen.py`` counts).
 
 Run ``python benchmarks/video.py [--per-family 7] [--workers 2] [--keep DIR] [--families F ...]
 [--fps F] [--size W H]`` (``--keep``: render into DIR and reuse the videos found there,
@@ -364,7 +365,8 @@ def measure(truth: dict[str, Any], path: Path, truth_file: Path) -> dict[str, An
     true = np.load(truth_file)
     row = {k: truth[k] for k in ("family", "within_guide", "renderer", "model", "coefficient")}
     row |= {"tilt_deg": scene["tilt_deg"], "clockwise": scene["clockwise"],
-            "radius_m": setup.radius, "frames": int(true["t"].size)}  # fmt: skip
+            "radius_m": setup.radius, "frames": int(true["t"].size),
+            "size": list(scene["size"]), "fps": scene["fps"]}  # fmt: skip
     start = time.perf_counter()
     try:
         track, _ = track_video(path, setup.radius, scene["platter_radius"])
@@ -403,6 +405,9 @@ def measure(truth: dict[str, Any], path: Path, truth_file: Path) -> dict[str, An
     name = fit.COEFFICIENT[truth["model"]]
     c = truth["coefficient"]
     z = float((own.coefficient - c) / own.stderr)
+    check = fit.consistency(track.film, measured, result, fit_axis=True)
+    decisive = fit.checked_selection(result, check).decisive
+    wrong_model = bool(decisive and truth["distinct"] and result.selected != truth["model"])
     return row | {
         "fitted": own.coefficient,
         "stderr": own.stderr,
@@ -420,9 +425,9 @@ def measure(truth: dict[str, Any], path: Path, truth_file: Path) -> dict[str, An
         "residual_over_noise": own.noise_ratio,
         "distinguishable": truth["distinct"],
         "selected": result.selected,
-        "decisive": fit.checked_selection(
-            result, fit.consistency(track.film, measured, result, fit_axis=True)
-        ).decisive,
+        "decisive": decisive,
+        "wrong": row["wrong"] or wrong_model,
+        "wrong_model": wrong_model,
     }
 
 
@@ -455,6 +460,7 @@ def summary(rows: list[dict[str, Any]]) -> dict[str, Any]:
         "confident_wrong_coefficient": sum(
             r.get("confident_wrong_coefficient", False) for r in rows
         ),
+        "decisive_wrong_model": sum(r.get("wrong_model", False) for r in rows),
         "right_model_where_distinguishable": float(
             np.mean([r["selected"] == r["model"] for r in distinct])
         )
@@ -503,8 +509,7 @@ def run(
         print(f"{path.name}: {r['model']} tilt {r['tilt_deg']:.0f}: {what}", flush=True)
     within = [r for r in rows if r["within_guide"]]
     return {
-        "size": [1280, 720],
-        "fps": 240.0,
+        "videos_as": sorted({f"{r['size'][0]}x{r['size'][1]} at {r['fps']:g}" for r in rows}),
         "targets": {
             "tracked_within_guide": 0.95,
             "position_rms_radii": 0.05,

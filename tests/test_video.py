@@ -355,7 +355,7 @@ SLOW = pytest.mark.slow
 @pytest.mark.parametrize(
     ("options", "says"),
     [
-        pytest.param(("--ball-at", "mark"), "--ball-at", id="mark-seeded-as-ball"),
+        pytest.param(("--ball-at", "mark"), "is not followed from there", id="mark-seeded-as-ball"),
         pytest.param(("--mark-at", "ball"), "--mark-at", id="ball-seeded-as-mark", marks=SLOW),
         pytest.param(("--rpm", "34"), "not at the given --rpm 34", id="rpm-2-percent-off",
                      marks=SLOW),

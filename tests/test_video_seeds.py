@@ -20,6 +20,7 @@ from turntable.video import camera
 from turntable.video.check import first_failure
 from turntable.video.decode import Video, VideoError, rgb, write_video
 from turntable.video.render import Scene, render_video
+from turntable.video.seeds import Seed
 from turntable.video.track import track_video
 
 RADIUS, PLATTER = 0.008, 0.15
@@ -172,3 +173,19 @@ def test_a_failed_check_does_not_ask_for_a_seed_that_was_given(option) -> None:
     assert f"give {option} U,V" in first_failure(first)
     assert f"give {option} U,V" not in first_failure(first, [option])
     assert f"{option} N:U,V" in first_failure(first, [option])
+
+
+@pytest.mark.parametrize(
+    "options",
+    [
+        pytest.param({"mark_at": [Seed(460, 100.0, 50.0)]}, id="seed-past-the-end"),
+        pytest.param({"last_frame": 46}, id="last-frame-past-the-end"),
+        pytest.param({"last_frame": 20, "ball_at": [Seed(25, 1.0, 2.0)]}, id="seed-after-it"),
+    ],
+)
+def test_bad_frames_are_refused_before_a_frame_is_read(hidden_mark, options) -> None:
+    path, _ = hidden_mark
+    read: list[int] = []
+    with pytest.raises(VideoError, match=r"past the end|is after"):
+        track_video(path, RADIUS, PLATTER, progress=lambda *p: read.append(p[1]), **options)
+    assert max(read, default=0) == 0

@@ -85,7 +85,8 @@ class Paths(NamedTuple):
 
 
 class Seeds(NamedTuple):
-    """Seeds of the frames after the first, by frame (`turntable.video.seeds`)."""
+    """Seeds by frame (`turntable.video.seeds`); those of the first frame placed the ball and
+    the mark already (`turntable.video.find`)."""
 
     ball: dict[int, Seed]
     mark: dict[int, Seed]
@@ -296,8 +297,9 @@ class _Run:
         if index % self.every == 0 and index:
             self.rim_pts.append(rim_points_again(self.platter.level(lab(picture)), rim))
         # a seed of this frame puts the ball or the mark where it says
-        _reseed(ball, seeds.ball.get(index))
-        _reseed(mark, seeds.mark.get(index))
+        if index:
+            _reseed(ball, seeds.ball.get(index))
+            _reseed(mark, seeds.mark.get(index))
         # the ball, refused at the rim or the image's edge; the mark, unless it touches it
         got = m = None
         if not ball.given_up:
@@ -438,9 +440,10 @@ def _seen_last(found: Found, ball: _State, mark: _State) -> list[Candidate]:
 
 
 def _check_seeded(seeds: Seeds, index: int, got, m, found: Found, picture: Picture) -> None:
-    """Refuse a seed where nothing of its colour is found."""
+    """Refuse a seed after the first frame where nothing of its colour is found (on the
+    first, the search found it: a mark in a lamp's spot is followed out of it)."""
     for name, seed, blob in (("ball", seeds.ball, got), ("mark", seeds.mark, m)):
-        if index not in seed or blob is not None:
+        if not index or index not in seed or blob is not None:
             continue
         other = "mark" if name == "ball" else "ball"
         where = getattr(found, name)._replace(u=seed[index].u, v=seed[index].v)
@@ -460,12 +463,19 @@ def _give_up_or_refuse(state, name, later, index, t, found, ball, mark) -> None:
         state.given_up = True
         return
     frame, at, image = state.lost_at
+    seen = _seen_last(found, ball, mark)
+    if state.t_last is None and frame in later:  # not found once from its seed
+        raise VideoError(
+            f"{_option(name)} {later[frame]}: the {name} is not followed from there (not found "
+            f"for {state.misses} frames): put the seed on the {name}; --plot draws frame {frame}",
+            LostAt(image, seen, frame),
+        )
     raise VideoError(
         f"the {name} is lost at frame {frame} (t = {at:.3f} s) and not found for "
         f"{state.misses} frames ({t - at:.2g} s): give {_option(name)} {frame}:U,V, a pixel "
         f"on it in frame {frame} (or in a later frame where it is seen), or --last-frame "
         f"{frame - 1} to end the film before it; --plot draws frame {frame}",
-        LostAt(image, _seen_last(found, ball, mark), frame),
+        LostAt(image, seen, frame),
     )
 
 

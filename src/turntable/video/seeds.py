@@ -16,7 +16,7 @@ from typing import NamedTuple
 
 __all__ = [
     "Seed",
-    "after_first_frame",
+    "by_frame",
     "check_frames",
     "check_last_frame",
     "on_first_frame",
@@ -128,6 +128,6 @@ def on_first_frame(seeds: list[Seed]) -> tuple[float, float] | None:
     return next(((s.u, s.v) for s in seeds if s.frame == 0), None)
 
 
-def after_first_frame(seeds: list[Seed]) -> dict[int, Seed]:
-    """The seeds of the later frames, by frame (for following)."""
-    return {s.frame: s for s in seeds if s.frame > 0}
+def by_frame(seeds: list[Seed]) -> dict[int, Seed]:
+    """The seeds by frame (for following)."""
+    return {s.frame: s for s in seeds}

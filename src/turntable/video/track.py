@@ -32,7 +32,7 @@ from turntable.video.follow import LostAt, Paths, Seeds, follow
 from turntable.video.platter import Ellipse, find_platter
 from turntable.video.seeds import (
     Seed,
-    after_first_frame,
+    by_frame,
     check_frames,
     check_last_frame,
     on_first_frame,
@@ -292,7 +292,7 @@ def _track(info: VideoInfo, frames, ball_radius, platter_radius, rpm, ball_at, m
             mark_step,
             pose0,
             ball_radius,
-            Seeds(after_first_frame(ball_at), after_first_frame(mark_at)),
+            Seeds(by_frame(ball_at), by_frame(mark_at)),
         )
     except VideoError as exc:
         raise VideoError(str(exc), _lost_look(exc.found, look)) from None

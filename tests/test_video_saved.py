@@ -59,6 +59,22 @@ def test_the_fit_of_the_track_is_the_fit_of_the_video(tracked, capsys) -> None:
     assert a["video"]["stderr_parts"]  # the camera's uncertainty carried
 
 
+def test_a_track_made_with_rpm_is_fitted_with_it(tracked, tmp_path, capsys) -> None:
+    """Tracked with --rpm, the track is fitted as its video with that --rpm."""
+    video, _ = tracked
+    out, rpm = tmp_path / "rpm.csv", "33.3333333"
+    made = run_here(capsys, "track", str(video), "--ball-radius", str(RADIUS),
+                    "--platter-radius", str(PLATTER), "--rpm", rpm, "-o", str(out))  # fmt: skip
+    assert made.returncode == 0, made.stderr
+    of_video = run_here(capsys, "fit", str(video), *FIT, "--platter-radius", str(PLATTER),
+                        "--rpm", rpm)  # fmt: skip
+    of_track = run_here(capsys, "fit", str(out), *FIT)
+    assert of_video.returncode == of_track.returncode == 0, of_track.stderr
+    a, b = json.loads(of_video.stdout), json.loads(of_track.stdout)
+    assert a["setup"] == b["setup"]
+    assert a["slipping"] == b["slipping"]
+
+
 def _moved(lines: list[str], doc: dict) -> None:
     t, x, y = lines[-1].split(",")
     lines[-1] = f"{t},{float(x) + 1e-4:.10g},{y}"
@@ -121,6 +137,12 @@ def test_a_track_is_fitted(tracked, tmp_path, capsys, edit, args) -> None:
                      id="platter-radius"),
         pytest.param(None, [*FIT, "--rpm", "45"], "--rpm 45: ", id="rpm-not-tracked-with"),
         pytest.param(None, [*FIT, "--ball-at", "3,3"], "--ball-at: ", id="seed"),
+        pytest.param(None, [*FIT, "--last-frame", "5"], "--last-frame: ", id="last-frame"),
+        pytest.param(None, [*FIT, "--axis", "0.01", "0.01"], "--axis: ", id="axis"),
+        pytest.param(_not_a_track, [*FIT, "--rpm", "33.3", "--mark-at", "5:1,1"],
+                     "--mark-at: ", id="seed-on-a-film"),
+        pytest.param(_not_a_track, [*FIT, "--platter-radius", "0.15"], "--platter-radius: ",
+                     id="platter-radius-on-a-film"),
     ],
 )  # fmt: skip
 def test_a_track_that_does_not_hold_together_is_refused(tracked, tmp_path, capsys, edit, args,

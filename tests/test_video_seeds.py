@@ -119,6 +119,7 @@ def test_fit_video_takes_seeds_on_any_frame(hidden_mark, capsys) -> None:
         pytest.param(["--mark-at", "460:100,50"], "frame 460 is past the end", id="past-the-end"),
         pytest.param(["--ball-at", "5:1,2", "--ball-at", "5:3,4"], "twice for frame 5", id="twice"),
         pytest.param(["--last-frame", "0"], "must be 1 or more", id="last-frame-first"),
+        pytest.param(["--ball-at", "2:320,50"], "outside the image (320x180 px)", id="outside"),
         pytest.param(["--last-frame", "46"], "past the end", id="last-frame-past-the-end"),
         pytest.param(
             ["--last-frame", "20", "--mark-at", "25:1,2"], "25 is after", id="seed-after-last-frame"

@@ -42,6 +42,23 @@ def _positive(option: str, value: float | None, unit: str) -> None:
         raise InputError(f"{option} must be a finite number > 0 ({unit}); got {value}")
 
 
+def _refuse_options_of_another_input(path, saved, video, axis_given, video_only) -> None:
+    """One line for an option that the input does not take: seeds and --last-frame are for
+    a video, --axis for a film (a video's axis is measured), --platter-radius not for a film
+    in a table."""
+    given = [option for option, is_given in video_only.items() if is_given]
+    if given and (saved or not video):
+        what = "a track; it is for its video" if saved else "a film; it is for a video"
+        raise InputError(f"{given[0]}: {path} is {what} (turntable track VIDEO {given[0]})")
+    if video and axis_given:
+        raise InputError(f"--axis: {path} is a video, whose axis is measured; --axis is for a film")
+    if video and not saved and Path(path).suffix.lower() in (".csv", ".txt"):
+        raise InputError(
+            f"--platter-radius: {path} is a film ({Path(path).suffix}); --platter-radius is for a "
+            "video"
+        )
+
+
 def _same_as_tracked(
     path: str, option: str, value: float | None, tracked: float, unit: str
 ) -> None:
@@ -207,6 +224,7 @@ def fitted_film(
         _positive(option, value, unit)
     if omega is not None and rpm is not None:
         raise InputError("give one of --omega and --rpm, not both")
+    axis_given = axis is not None
     axis = (0.0, 0.0) if axis is None else (float(axis[0]), float(axis[1]))
     if not all(math.isfinite(a) for a in axis):
         raise InputError(f"--axis must be two finite numbers (m); got {list(axis)}")
@@ -219,6 +237,9 @@ def fitted_film(
         raise InputError(f"{path} is a video: give --platter-radius P (m)")
     if not video and omega is None and rpm is None:
         raise InputError("one of the arguments --omega --rpm is required")
+    video_only = {"--ball-at": bool(ball_at), "--mark-at": bool(mark_at),
+                  "--last-frame": last_frame is not None}  # fmt: skip
+    _refuse_options_of_another_input(path, saved, video, axis_given, video_only)
     # a video's image of the ball's centre is off by a few thousandths of R in a fixed
     # direction, more than a rolling fit's precision: the rolling model's axis is fitted
     options = {"fit_omega": fit_omega, "fit_axis": fit_axis or video}
@@ -227,14 +248,8 @@ def fitted_film(
     if saved:
         from turntable.video.saved import read_track
 
-        given = [o for o, v in (("--ball-at", ball_at), ("--mark-at", mark_at),
-                                ("--last-frame", last_frame is not None)) if v]  # fmt: skip
-        if given:
-            raise InputError(
-                f"{given[0]}: {path} is a track; it is for its video (turntable track VIDEO "
-                f"{given[0]})"
-            )
         tracked, notes, tracked_rpm = read_track(path)
+        rpm = tracked_rpm if rpm is None else rpm  # fitted as its video with that --rpm
         _same_as_tracked(path, "--radius", radius, tracked.ball_radius, " m")
         _same_as_tracked(path, "--platter-radius", platter_radius, tracked.platter_radius, " m")
         if rpm is not None and rpm != tracked_rpm:

@@ -58,8 +58,9 @@ MIN_FOUND = 0.5
 #: The ball's path in the platter's frame spreads over at least this (R): a blob that turns
 #: with the platter is a mark or a label.
 MIN_SPREAD_R = 0.5
-#: A jump: a position more than ``JUMP_R`` R off the line between its neighbours (and what an
-#: acceleration of 2 Omega^2 P does); at most ``JUMP_SHARE`` of the positions jump.
+#: A jump: a position more than ``JUMP_R`` R off the line between its neighbours, beyond the
+#: a b c / 2 that an acceleration a = 4 Omega^2 P gives over steps b and c; at most
+#: ``JUMP_SHARE`` of the positions jump.
 JUMP_R, JUMP_SHARE = 0.25, 0.02
 #: The ball's scatter about its smooth path: the limit (rms, in R) and the half-window (s, and
 #: at least ``SMOOTH_FRAMES`` frames).

@@ -222,11 +222,11 @@ def find(
         marks, planes, candidates, seeded.get("--ball-at"), pose, ball_radius, tolerance
     )
     if ball is None:
-        expected = _area_at(pose, pose.principal, ball_radius)
+        across = 2 * math.sqrt(_area_at(pose, pose.principal, ball_radius) / math.pi)
         raise VideoError(
-            f"no ball found on the first frame: nothing round of about {expected:.0f} px (a ball "
-            "of the given radius at the rim's scale) differs from the platter and moves on its "
-            f"own; check --ball-radius and --platter-radius, or {SEED_HINT}",
+            f"no ball found on the first frame: nothing round of about {across:.0f} px across (a "
+            "ball of the given radius at the rim's scale) differs from the platter and moves on "
+            f"its own; check --ball-radius and --platter-radius, or {SEED_HINT}",
             candidates,
         )
     candidates[ball] = candidates[ball]._replace(kind="ball")
@@ -469,7 +469,7 @@ def _turning_through(c: Candidate, t0: float, seen, pose: Pose, tolerance: float
 
 
 def _area_at(pose: Pose, uv: tuple[float, float], ball_radius: float) -> float:
-    """Area (px) of the image of a ball of radius R seen at ``uv``."""
+    """Area (px^2) of the image of a ball of radius R seen at ``uv``."""
     return math.pi * float(camera.image_radius(pose, [uv], ball_radius)[0]) ** 2
 
 

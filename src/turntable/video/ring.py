@@ -32,7 +32,7 @@ except ImportError:  # without the extra [video]
 #: least: on a smaller image the ring is a pixel or two wide and its edge not found to a pixel.
 RING_DARK, RING_RAYS, RING_MIN_PX = 0.3, 0.75, 15.0
 #: The platter: a share within this of 0, from 1 to 3 px beyond the ring's edge.
-PLATTER = 0.15
+PLATTER_SHARE = 0.15
 #: The rays are sampled every ``STEP`` px from ``FROM`` to ``TO`` times the radius (and 3 px
 #: more).
 STEP, FROM, TO = 0.25, 0.6, 1.6
@@ -85,7 +85,7 @@ def edge_points(share: NDArray[np.float32], start: NDArray, radius: float,
         if not dark.size:
             continue
         ringed += 1
-        back = np.flatnonzero((index > dark[0]) & (p > -PLATTER))
+        back = np.flatnonzero((index > dark[0]) & (p > -PLATTER_SHARE))
         if not back.size:
             continue
         low = max(back[0] - 2 * px, dark[0])  # the ring's darkest, 2 px before it ends
@@ -95,7 +95,7 @@ def edge_points(share: NDArray[np.float32], start: NDArray, radius: float,
             continue
         j = m + 1 + int(np.argmax(p[m + 1 :] > level))
         beyond = p[j + px : j + 3 * px]
-        if beyond.size < 2 * px or np.abs(beyond).max() > PLATTER:
+        if beyond.size < 2 * px or np.abs(beyond).max() > PLATTER_SHARE:
             continue
         rr = r[0] + (j - 1 + (level - p[j - 1]) / max(p[j] - p[j - 1], 1e-6)) * STEP
         pts.append((start[0] + math.cos(a[k]) * rr, start[1] + math.sin(a[k]) * rr))

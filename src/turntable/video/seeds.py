@@ -51,6 +51,7 @@ def parse_seed(text: str) -> Seed:
     >>> parse_seed("310.5,92").frame
     0
     """
+    text = text.strip()  # a negative frame reaches here as " -1:U,V" (``turntable.cli``)
     frame_text, _, pixel = text.rpartition(":")
     frame = _frame(frame_text, text) if _ else 0
     try:
@@ -84,9 +85,16 @@ def seeds_of(value: tuple[float, float] | Iterable[Seed] | None) -> list[Seed]:
     return sorted(Seed(*s) for s in items)
 
 
-def check_frames(option: str, seeds: list[Seed], frames: int, last: int | None = None) -> None:
-    """Refuse two seeds in one frame, and a frame past the end of a video of ``frames``
-    frames (0: not known) or after the last frame tracked, ``last``.
+def check_frames(
+    option: str,
+    seeds: list[Seed],
+    frames: int,
+    last: int | None = None,
+    size: tuple[int, int] | None = None,
+) -> None:
+    """Refuse two seeds in one frame, a frame past the end of a video of ``frames`` frames
+    (0: not known) or after the last frame tracked, ``last``, and a pixel outside an image of
+    ``size`` (width, height).
 
     Raises
     ------
@@ -104,6 +112,8 @@ def check_frames(option: str, seeds: list[Seed], frames: int, last: int | None =
             )
         if last is not None and s.frame > last:
             raise ValueError(f"{option} {s}: frame {s.frame} is after --last-frame {last}")
+        if size is not None and not (0 <= s.u < size[0] and 0 <= s.v < size[1]):
+            raise ValueError(f"{option} {s}: outside the image ({size[0]}x{size[1]} px)")
 
 
 def check_last_frame(last: int | None, frames: int) -> None:

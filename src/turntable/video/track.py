@@ -238,7 +238,7 @@ def _check_frames(info: VideoInfo, ball_at: list[Seed], mark_at: list[Seed], las
     try:
         check_last_frame(last, info.frames)
         for option, given in (("--ball-at", ball_at), ("--mark-at", mark_at)):
-            check_frames(option, given, info.frames, last)
+            check_frames(option, given, info.frames, last, (info.width, info.height))
     except ValueError as exc:
         raise VideoError(f"{info.path}: {exc}") from None
     return info if last is None else info._replace(frames=last + 1)

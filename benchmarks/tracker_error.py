@@ -7,7 +7,8 @@ its statistical and calibration parts s_i (of ln c) and its tracker's part per u
 field's rms, u_i.  d_i ~ N(0, s_i^2 + sigma^2 u_i^2); sigma is estimated by maximum
 likelihood, with its upper one-sided 90 % limit (the profile of -2 ln L up by 1.28^2).  With
 sigma, the coverage (true coefficient within 2 SE) and the largest |z| are given over all the
-videos, and each video's with sigma estimated without it (leave one out).
+videos, each video's with sigma estimated without it (leave one out), and each renderer's
+videos' with sigma estimated on the other renderer's alone (out of sample).
 
 Run ``python benchmarks/tracker_error.py`` after both; the result is merged into
 ``results/benchmarks.json`` under ``tracker_error``.
@@ -64,6 +65,25 @@ def estimate(data) -> tuple[float, float]:
     return math.exp(best), upper
 
 
+def across_renderers(data, renderer: dict[str, str]) -> dict[str, dict]:
+    """Sigma sized on one renderer's videos; the coverage it gives the other's."""
+    out = {}
+    for sized_on in sorted(set(renderer.values())):
+        sized = [v for n, v in data.items() if renderer[n] == sized_on]
+        tested = {n: v for n, v in data.items() if renderer[n] != sized_on}
+        if len(sized) < 2 or not tested:
+            continue
+        sigma = estimate(sized)[0]
+        zs = np.array([z(v, sigma) for v in tested.values()])
+        out[f"sized_on_{sized_on}"] = {
+            "sigma_ml": sigma, "videos_tested": len(tested),
+            "coverage_2se": float(np.mean(np.abs(zs) < 2)),
+            "largest_abs_z": float(np.max(np.abs(zs))),
+            "beyond_4se": sorted(n for n, v in zip(tested, zs, strict=True) if abs(v) > 4),
+        }  # fmt: skip
+    return out
+
+
 def z(video, sigma: float) -> float:
     """(fitted - true) / SE, as the benchmarks count it."""
     _, s, u, ratio = video
@@ -71,7 +91,10 @@ def z(video, sigma: float) -> float:
 
 
 def main() -> None:
-    data = videos(json.loads((ROOT / "results/benchmarks.json").read_text()))
+    results = json.loads((ROOT / "results/benchmarks.json").read_text())
+    data = videos(results)
+    renderer = {f"{r['family']}_{i}": r["renderer"] for i, r in enumerate(results["video"]["rows"])}
+    renderer |= {r["case"]: "mujoco" for r in results["unseen"]["rows"]}
     if len(data) < 2:
         sys.exit(
             "tracker_error.py: fewer than 2 videos with the tracker's part in "
@@ -90,6 +113,7 @@ def main() -> None:
         "coverage_2se_leave_one_out": float(np.mean(np.abs(out) < 2)),
         "largest_abs_z_leave_one_out": float(np.max(np.abs(out))),
         "beyond_4se_leave_one_out": sorted(n for n, v in alone.items() if abs(v) > 4),
+        "across_renderers": across_renderers(data, renderer),
     }  # fmt: skip
     merge_results(ROOT / "results/benchmarks.json", {"tracker_error": res})
     print(json.dumps(res, indent=1))

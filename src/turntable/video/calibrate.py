@@ -26,6 +26,13 @@ measures it to a fifth (``LENS_Z``); elsewhere the lens is a pinhole's, with k1 
 to within :math:`\sqrt{k_1^2 + s_e^2}` of 0 (:math:`k_1` and its standard error :math:`s_e` as the
 mark measures them), which the standard
 errors of the camera and the covariance of the parameters carry (``Lens``).
+
+A camera looking nearly straight down shows its focal length, apart from its tilt, only in
+the ellipticity of its images, of the order of the tilt squared: an error of their shape of a
+ten-thousandth of their size (``MARK_SHAPE``), which the mark's tracked images carry, moves
+it, and the distance with it, far beyond the scatter of the images.  The covariance of the
+parameters carries it (``_focal_floor``), and with it the scale of the plane of the ball's
+centre, R above the platter, seen from that distance.
 """
 
 from __future__ import annotations
@@ -63,6 +70,14 @@ RIM_BIAS = 0.001
 #: distortion moves the corners of a 60-degree field of view inward by up to 5 %: k1 = -0.114;
 #: a wide-angle or fisheye lens bends more than this model describes).
 LENS_Z, MAX_K1 = 5.0, 0.15
+#: The shape of the images of the mark's circle is known to this share of its size at best,
+#: however many its points: its tracked centre carries errors of ~0.01 px that repeat at the
+#: same place of the image on every turn (the harmonics of the residuals of
+#: phone_lens_7_SYNTHETIC against its true camera: 0.005-0.013 px on a circle of 135 px).
+#: To first order in the tilt b, a camera's image of the platter's plane depends on b and
+#: the focal length f through b / f only; f itself is seen in the ellipticity of the images,
+#: of order b^2, and so ln f is measured to `MARK_SHAPE` / b^2 at best (`_focal_floor`).
+MARK_SHAPE = 1e-4
 #: Rows are read from the top down within this many frame intervals: where the readout is
 #: hard to tell from the camera's tilt (a camera looking nearly straight down), the bounds
 #: keep it physical.
@@ -139,7 +154,8 @@ class Calibration(NamedTuple):
         The lens's k1 as the mark measures it, and whether the camera uses it.
     parameters, covariance : numpy.ndarray
         The fitted parameters (`_At`) and their covariance, the uncertainty of k1 and what
-        follows from it included.
+        follows from it included, and the images' systematic error of the focal length
+        (`MARK_SHAPE`).
     interval : float
         The frame interval, s (the unit of the readout time among the parameters).
     """
@@ -419,7 +435,8 @@ def calibrate(
     mark_res = prob.mark(theta).reshape(-1, 2) * prob.sigma_mark
     r1 = _lag1(mark_res)
     k1_shift = k1_spread * _follows_k1(prob, theta, jac)
-    cov = _covariance(jac, r1, k1_shift)
+    focal_shift = _focal_floor(prob, theta, jac, r1) * _follows_focal(jac)
+    cov = _covariance(jac, r1, k1_shift, focal_shift)
     g0 = _derived(theta, size)
     grad = _derived_gradient(theta, size)
     se = np.sqrt(np.maximum(np.einsum("ij,jk,ik->i", grad, cov, grad), 0.0))
@@ -442,6 +459,38 @@ def calibrate(
     )
 
 
+def _focal_floor(prob: _Problem, theta: NDArray, jac: NDArray, r1: float) -> float:
+    """The standard error that the images' systematic errors (`MARK_SHAPE`) add to the fitted
+    ln f, beyond the fit's own.
+
+    The fit (``theta``, ``jac``: k1 held) weighs the images as if their scatter were all their
+    error: its ln f is the weighted mean of the images' own, of variance s_i^2, and the
+    prior's (``prob.prior_log_focal``^2 = s_p^2), the images' weight w = s_p^2 /
+    (s_p^2 + s_i^2).  Their systematic error, `MARK_SHAPE` / b^2 in ln f (b the tilt), moves
+    the fitted ln f by w times it.  At a tilt of several degrees it is a fraction of the
+    fit's own; for a camera looking nearly straight down it is the larger part (a camera
+    tilted by 0.9 degrees was put 40 % too far: its positions scaled by 0.5 % about the
+    axis, R above the platter seen from the wrong distance, and the fit's own standard error
+    a third of that).
+    """
+    i = _At.LOG_FOCAL
+    var = float(np.linalg.pinv(jac.T @ jac)[i, i]) * ((1 + r1) / (1 - r1) if r1 > 0 else 1.0)
+    prior = prob.prior_log_focal**2
+    var = min(var, prior * (1 - 1e-9))
+    own = 1.0 / (1.0 / var - 1.0 / prior)  # the images' alone
+    floor = min(MARK_SHAPE / max(float(theta[_At.TILT]) ** 2, 1e-12), 1e6)
+    return prior / (prior + own) * floor
+
+
+def _follows_focal(jac: NDArray) -> NDArray:
+    """d theta / d ln f: how the fitted parameters follow a change of ln f held (1 in ln f,
+    k1 held at 0), from the Jacobian of the fit with k1 held."""
+    i = _At.LOG_FOCAL
+    others = np.delete(jac, i, axis=1)
+    shift = -np.linalg.pinv(others.T @ others) @ others.T @ jac[:, i]
+    return np.r_[np.insert(shift, i, 1.0), 0.0]
+
+
 def _follows_k1(prob: _Problem, theta: NDArray, jac: NDArray) -> NDArray:
     """d theta / d k1: how the fitted parameters follow a change of the held k1 (1 in k1)."""
     e = np.zeros_like(theta)
@@ -451,15 +500,18 @@ def _follows_k1(prob: _Problem, theta: NDArray, jac: NDArray) -> NDArray:
     return np.r_[shift / 2e-6, 1.0]
 
 
-def _covariance(jac: NDArray, r1: float, k1_shift: NDArray) -> NDArray:
+def _covariance(jac: NDArray, r1: float, *shifts: NDArray) -> NDArray:
     """The parameters' covariance: the fit's (k1 held), widened by sqrt((1 + r) / (1 - r))
-    for the mark's lag-1 autocorrelation r > 0, plus the shift of all of them with k1 by its
-    standard error (``k1_shift``)."""
+    for the mark's lag-1 autocorrelation r > 0, plus the shift of all of them with each of
+    ``shifts`` (k1 by its standard error; ln f by the images' systematic error,
+    `_focal_floor`)."""
     cov = np.zeros((_At.SIZE, _At.SIZE))
     cov[_At.HELD_K1, _At.HELD_K1] = np.linalg.pinv(jac.T @ jac)
     if r1 > 0:
         cov *= (1 + r1) / (1 - r1)
-    return cov + np.outer(k1_shift, k1_shift)
+    for shift in shifts:
+        cov += np.outer(shift, shift)
+    return cov
 
 
 def _derived_gradient(theta: NDArray, size: tuple[int, int]) -> NDArray:

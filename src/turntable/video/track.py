@@ -52,8 +52,10 @@ FAST_RATE, FRAME_RATE = 8.0, 30.0
 #: The platter differs from what surrounds it by at least this (CIELAB distance).
 MIN_RIM_CONTRAST = 8.0
 #: A warning where the camera's distance, which the ball's height above the platter is seen
-#: from, is known so poorly (a camera looking nearly straight down) that the positions at
-#: the rim could move by more than this (ball radii).
+#: from, is known so poorly (a camera looking nearly straight down) that two of its standard
+#: errors move the positions at the rim by more than this (ball radii): one may not be all it
+#: is off by (a camera tilted by 0.9 degrees, put 1.6 standard errors too far, moved them by
+#: 0.1 R).
 DISTANCE_WARNING_R = 0.05
 
 
@@ -350,13 +352,15 @@ def _finish(info, paths: Paths, cal, results, look, ball_radius, platter_radius,
         )
     share = cal.stderr["distance_m"] / cal.derived["distance_m"]  # of ln d
     scale = ball_radius / cal.derived["distance_m"] * share
-    if platter_radius * scale > DISTANCE_WARNING_R * ball_radius:
+    rim_r = 2 * platter_radius * scale / ball_radius  # two standard errors at the rim
+    if rim_r > DISTANCE_WARNING_R:
         warnings.append(
             f"the camera looks nearly straight down (tilt {cal.derived['tilt_deg']:.1f} deg): "
-            f"its distance is known to +-{100 * share:.0f} % only, and so the positions may be "
-            f"scaled about the axis by up to +-{100 * scale:.2g} % (R above the platter, seen "
-            "from an uncertain distance; a fit of friction does not depend on it); a tilt of "
-            "10 degrees or more measures the distance"
+            f"its distance is known to +-{100 * share:.0f} % (one standard error) only, and so "
+            f"the positions may be scaled about the axis by +-{100 * scale:.2g} % "
+            f"(+-{200 * scale:.2g} % at two standard errors; {rim_r:.2g} R at the rim): R "
+            "above the platter, seen from an uncertain distance; a fit of "
+            "friction does not depend on it; a tilt of 10 degrees or more measures the distance"
         )
     omega = abs(cal.omega)
     if rpm is not None:

@@ -676,7 +676,7 @@ def test_a_camera_nearly_straight_down_says_how_far_its_scale_may_be_off() -> No
     about the axis.  The standard error of the distance covers that within 2 of it (the
     images' own scatter, 0.12 in ln d, put it 2.8 off; `calibrate.MARK_SHAPE`), and so does
     the scale it gives the positions (R / d times it)."""
-    from turntable.video.calibrate import calibrate
+    from turntable.video.calibrate import MAX_K1, calibrate
     from turntable.video.camera import Pose, project, sphere_centre
     from turntable.video.platter import fit_ellipse
 
@@ -691,6 +691,8 @@ def test_a_camera_nearly_straight_down_says_how_far_its_scale_may_be_off() -> No
     along = np.c_[-np.sin(seen), np.cos(seen)]
     mark += -0.013 * np.sin(2 * seen)[:, None] * along + rng.normal(0.0, 0.05, mark.shape)
     cal = calibrate(rim_pts, fit_ellipse(rim_pts), t, mark, true.size, 0.15)
+    assert cal.lens.k1_stderr > MAX_K1  # the mark cannot measure the lens: its k1 is taken
+    assert cal.lens.spread == pytest.approx(MAX_K1)  # within the lenses the model takes
     off = math.log(cal.derived["distance_m"] / true.distance)
     share = cal.stderr["distance_m"] / cal.derived["distance_m"]
     assert off > 0.3  # the error is there: the images cannot tell it

@@ -113,7 +113,8 @@ class Lens(NamedTuple):
         k1 as the mark alone measures it, and its standard error.
     shift : numpy.ndarray
         The calibration's parameters moved by one standard error of k1 (the others
-        following it): sqrt(k1^2 + k1_stderr^2) if not measured, k1_stderr if measured.
+        following it): sqrt(k1^2 + k1_stderr^2), at most `MAX_K1`, if not measured;
+        k1_stderr if measured.
     """
 
     measured: bool
@@ -430,8 +431,9 @@ def calibrate(
     lens = 0 < LENS_Z * k1_se <= abs(k1) < MAX_K1 * (1 - 1e-6)
     if lens:
         theta, jac, prob = _best(args, k1)
-    # a lens not measured to LENS_Z is a pinhole's, with k1 known to its distance from 0
-    k1_spread = k1_se if lens else math.hypot(k1, k1_se)
+    # a lens not measured to LENS_Z is a pinhole's, with k1 known to its distance from 0,
+    # and within the lenses the model takes (+-MAX_K1) however poorly the mark measures it
+    k1_spread = k1_se if lens else min(math.hypot(k1, k1_se), MAX_K1)
     mark_res = prob.mark(theta).reshape(-1, 2) * prob.sigma_mark
     r1 = _lag1(mark_res)
     k1_shift = k1_spread * _follows_k1(prob, theta, jac)

@@ -42,21 +42,34 @@ def _positive(option: str, value: float | None, unit: str) -> None:
         raise InputError(f"{option} must be a finite number > 0 ({unit}); got {value}")
 
 
+def _refuse_a_contradicted_rate(tracked, omega: float, rpm: float | None) -> None:
+    """A rate given that the video contradicts would bias the fit: one line."""
+    from turntable.video.track import rate_contradicted
+
+    if omega == abs(tracked.calibration.omega):
+        return
+    says = rate_contradicted(tracked.calibration, omega)
+    if says:
+        given = f"--rpm {rpm:g}" if rpm is not None else f"--omega {omega:g}"
+        raise InputError(f"{given}: {says}; leave it out to fit with the rate the video measures")
+
+
 def _refuse_options_of_another_input(path, saved, video, axis_given, video_only) -> None:
     """One line for an option that the input does not take: seeds and --last-frame are for
     a video, --axis for a film (a video's axis is measured), --platter-radius not for a film
     in a table."""
-    given = [option for option, is_given in video_only.items() if is_given]
-    if given and (saved or not video):
-        what = "a track; it is for its video" if saved else "a film; it is for a video"
-        raise InputError(f"{given[0]}: {path} is {what} (turntable track VIDEO {given[0]})")
-    if video and axis_given:
-        raise InputError(f"--axis: {path} is a video, whose axis is measured; --axis is for a film")
     if video and not saved and Path(path).suffix.lower() in (".csv", ".txt"):
         raise InputError(
             f"--platter-radius: {path} is a film ({Path(path).suffix}); --platter-radius is for a "
             "video"
         )
+    given = [option for option, is_given in video_only.items() if is_given]
+    if given and (saved or not video):
+        what = "a track; it is for its video" if saved else "a film; it is for a video"
+        raise InputError(f"{given[0]}: {path} is {what} (turntable track VIDEO {given[0]})")
+    if video and axis_given:
+        what = "a track of a video" if saved else "a video"
+        raise InputError(f"--axis: {path} is {what}, whose axis is measured; --axis is for a film")
 
 
 def _same_as_tracked(
@@ -249,7 +262,6 @@ def fitted_film(
         from turntable.video.saved import read_track
 
         tracked, notes, tracked_rpm = read_track(path)
-        rpm = tracked_rpm if rpm is None else rpm  # fitted as its video with that --rpm
         _same_as_tracked(path, "--radius", radius, tracked.ball_radius, " m")
         _same_as_tracked(path, "--platter-radius", platter_radius, tracked.platter_radius, " m")
         if rpm is not None and rpm != tracked_rpm:
@@ -266,11 +278,12 @@ def fitted_film(
             path, radius, platter_radius, rpm,
             {"ball_at": ball_at, "mark_at": mark_at, "last_frame": last_frame}, progress=progress,
         )  # fmt: skip
-    if video:
-        for message in notes:
-            log.warning(message)
     if omega is None:
         omega = film_io.rpm_to_omega(rpm) if rpm is not None else abs(tracked.calibration.omega)
+    if video:
+        _refuse_a_contradicted_rate(tracked, omega, rpm)
+        for message in notes:
+            log.warning(message)
     setup = film_io.Setup(radius, omega, k, axis)
     if tracked is not None:
         data = tracked.film

@@ -470,10 +470,7 @@ def _focal_floor(prob: _Problem, theta: NDArray, jac: NDArray, r1: float) -> flo
     prior's (``prob.prior_log_focal``^2 = s_p^2), the images' weight w = s_p^2 /
     (s_p^2 + s_i^2).  Their systematic error, `MARK_SHAPE` / b^2 in ln f (b the tilt), moves
     the fitted ln f by w times it.  At a tilt of several degrees it is a fraction of the
-    fit's own; for a camera looking nearly straight down it is the larger part (a camera
-    tilted by 0.9 degrees was put 40 % too far: its positions scaled by 0.5 % about the
-    axis, R above the platter seen from the wrong distance, and the fit's own standard error
-    a third of that).
+    fit's own; for a camera looking nearly straight down it is the larger part.
     """
     i = _At.LOG_FOCAL
     var = float(np.linalg.pinv(jac.T @ jac)[i, i]) * ((1 + r1) / (1 - r1) if r1 > 0 else 1.0)

@@ -24,7 +24,7 @@ from turntable.video.camera import Pose
 from turntable.video.decode import Picture, VideoError, lab, rgb, window
 from turntable.video.find import RIM_MARGIN_PX, Candidate, Found
 from turntable.video.platter import Ellipse, Platter, rim_points_again
-from turntable.video.seeds import Seed
+from turntable.video.seeds import Seed, end_before
 
 #: Rim points are collected on this many frames, spread over the video (every
 #: ``RIM_EVERY`` frames where the video does not say how many it has).
@@ -390,8 +390,12 @@ def _refuse_at_the_edge(got: Blob | None, picture, r_px: float, index: int, t: f
             "the platter's rim" if _inside_image(got, picture.shape, r_px) else "the image's edge"
         )
         raise VideoError(
-            f"the ball reaches {where} at frame {index} (t = {t:.3f} s): end the film before "
-            f"it does, --last-frame {index - 1}"
+            f"the ball reaches {where} at frame {index} (t = {t:.3f} s): "
+            + (
+                f"end the film before it does, {end}"
+                if (end := end_before(index))
+                else "too soon for a film to end before it"
+            )
         )
 
 
@@ -473,8 +477,9 @@ def _give_up_or_refuse(state, name, later, index, t, found, ball, mark) -> None:
     raise VideoError(
         f"the {name} is lost at frame {frame} (t = {at:.3f} s) and not found for "
         f"{state.misses} frames ({t - at:.2g} s): give {_option(name)} {frame}:U,V, a pixel "
-        f"on it in frame {frame} (or in a later frame where it is seen), or --last-frame "
-        f"{frame - 1} to end the film before it; --plot draws frame {frame}",
+        f"on it in frame {frame} (or in a later frame where it is seen)"
+        + (f", or {end} to end the film before it" if (end := end_before(frame)) else "")
+        + f"; --plot draws frame {frame}",
         LostAt(image, seen, frame),
     )
 

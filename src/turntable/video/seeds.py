@@ -14,11 +14,17 @@ import math
 from collections.abc import Iterable
 from typing import NamedTuple
 
+#: A film has at least this many frames: the mark is found on 10 at least
+#: (``turntable.video.track.MIN_MARK_FRAMES``), and the fit compares the models on 20
+#: coordinates or more.
+MIN_FILM_FRAMES = 20
+
 __all__ = [
     "Seed",
     "by_frame",
     "check_frames",
     "check_last_frame",
+    "end_before",
     "on_first_frame",
     "parse_seed",
     "seeds_of",
@@ -116,9 +122,14 @@ def check_frames(
             raise ValueError(f"{option} {s}: outside the image ({size[0]}x{size[1]} px)")
 
 
+def end_before(frame: int) -> str | None:
+    """``--last-frame N`` that ends the film before ``frame``, if that leaves a film."""
+    return f"--last-frame {frame - 1}" if frame >= MIN_FILM_FRAMES else None
+
+
 def check_last_frame(last: int | None, frames: int) -> None:
-    """Refuse a last frame before the second or past the end of a video of ``frames``
-    frames (0: not known).
+    """Refuse a last frame that leaves fewer than `MIN_FILM_FRAMES` frames, or past the end
+    of a video of ``frames`` frames (0: not known).
 
     Raises
     ------
@@ -127,8 +138,11 @@ def check_last_frame(last: int | None, frames: int) -> None:
     """
     if last is None:
         return
-    if last < 1:
-        raise ValueError(f"--last-frame {last}: must be 1 or more (0 is the first frame)")
+    if last + 1 < MIN_FILM_FRAMES:
+        raise ValueError(
+            f"--last-frame {last}: a film needs {MIN_FILM_FRAMES} frames at least (0 is the "
+            f"first): --last-frame {MIN_FILM_FRAMES - 1} or more"
+        )
     if frames and last >= frames:
         raise ValueError(f"--last-frame {last}: past the end of the video (frames 0-{frames - 1})")
 

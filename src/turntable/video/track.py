@@ -49,13 +49,15 @@ MAX_PROBE_FRAMES = 120
 #: Before its rate is measured, the mark may turn this fast (rad/s, 76 rpm; or as ``--rpm``
 #: says), at a frame rate of ``FRAME_RATE`` where the video does not say.
 FAST_RATE, FRAME_RATE = 8.0, 30.0
+#: A rate given (--rpm, --omega) that the video's differs from by more than ``RATE_Z`` of its
+#: standard errors and ``RATE_SHARE`` is contradicted (33.3 for 33 1/3 rpm is, at 0.1 %).
+RATE_Z, RATE_SHARE = 4.0, 1e-3
 #: The platter differs from what surrounds it by at least this (CIELAB distance).
 MIN_RIM_CONTRAST = 8.0
 #: A warning where the camera's distance, which the ball's height above the platter is seen
 #: from, is known so poorly (a camera looking nearly straight down) that two of its standard
 #: errors move the positions at the rim by more than this (ball radii): one may not be all it
-#: is off by (a camera tilted by 0.9 degrees, put 1.6 standard errors too far, moved them by
-#: 0.1 R).
+#: is off by (``turntable.video.calibrate.MARK_SHAPE``).
 DISTANCE_WARNING_R = 0.05
 
 
@@ -330,6 +332,20 @@ def _track(info: VideoInfo, frames, ball_radius, platter_radius, rpm, ball_at, m
     return _finish(info, paths, cal, results, look, ball_radius, platter_radius, rpm)
 
 
+def rate_contradicted(cal: Calibration, omega: float) -> str | None:
+    """Where the video's rate differs from ``omega`` (rad/s) by more than `RATE_Z` of its
+    standard errors and `RATE_SHARE`: "the platter turns at ... rpm in the video"."""
+    seen = abs(cal.omega)
+    z = (seen - omega) / cal.omega_stderr if cal.omega_stderr > 0 else math.inf
+    if abs(z) <= RATE_Z or abs(seen / omega - 1) <= RATE_SHARE:
+        return None
+    to_rpm = 60 / (2 * math.pi)
+    return (
+        f"the platter turns at {seen * to_rpm:.5g} +- {cal.omega_stderr * to_rpm:.2g} rpm in the "
+        "video"
+    )
+
+
 def _lost_look(lost: LostAt | None, look: FirstLook) -> FirstLook:
     if lost is None:
         return look
@@ -354,24 +370,17 @@ def _finish(info, paths: Paths, cal, results, look, ball_radius, platter_radius,
     scale = ball_radius / cal.derived["distance_m"] * share
     rim_r = 2 * platter_radius * scale / ball_radius  # two standard errors at the rim
     if rim_r > DISTANCE_WARNING_R:
+        tilt = cal.derived["tilt_deg"]
         warnings.append(
-            f"the camera looks nearly straight down (tilt {cal.derived['tilt_deg']:.1f} deg): "
-            f"its distance is known to +-{100 * share:.0f} % (one standard error) only, and so "
-            f"the positions may be scaled about the axis by +-{100 * scale:.2g} % "
-            f"(+-{200 * scale:.2g} % at two standard errors; {rim_r:.2g} R at the rim): R "
-            "above the platter, seen from an uncertain distance; a fit of "
-            "friction does not depend on it; a tilt of 10 degrees or more measures the distance"
+            f"the camera's distance is known to +-{100 * share:.0f} % (one standard error) only "
+            f"(tilt {tilt:.1f} deg, {t.size} frames), and so the positions may be scaled about "
+            f"the axis by +-{100 * scale:.2g} % (+-{200 * scale:.2g} % at two standard errors; "
+            f"{rim_r:.2g} R at the rim): R above the platter, seen from an uncertain distance; "
+            "a fit of friction does not depend on it"
+            + ("; a tilt of 10 degrees or more measures the distance" if tilt < 10 else "")
         )
-    omega = abs(cal.omega)
-    if rpm is not None:
-        given = 2 * math.pi * rpm / 60
-        z = (omega - given) / cal.omega_stderr if cal.omega_stderr > 0 else math.inf
-        if abs(z) > 4 and abs(omega / given - 1) > 1e-3:
-            warnings.append(
-                f"the platter turns at {omega * 60 / (2 * math.pi):.5g} +- "
-                f"{cal.omega_stderr * 60 / (2 * math.pi):.2g} rpm in the video, not at the given "
-                f"--rpm {rpm:g}"
-            )
+    if rpm is not None and (says := rate_contradicted(cal, 2 * math.pi * rpm / 60)):
+        warnings.append(f"{says}, not at the given --rpm {rpm:g}")
     film = Film(cal.times(t[ok], paths.ball[ok, 1]), xy[:, 0], xy[:, 1], synthetic=info.synthetic)
     track = Track(
         film=film,

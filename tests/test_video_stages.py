@@ -335,6 +335,7 @@ def _shaded_ball(
     shadow: float = 0.4,
     focal: float = 1000.0,
     side: int = 96,
+    grey=(150.0, 150.0, 155.0),
 ) -> tuple:
     """A green ball lit from one side, low (``zenith_deg``: 50 degrees from the zenith), on a
     grey platter with its shadow, drawn as `turntable.video.render` draws it (`_scene.sphere`:
@@ -346,7 +347,7 @@ def _shaded_ball(
     it; or of the colour ``paper`` (RGB), its edge ``edge`` of R beyond the ball's centre.
     The ball is green unless ``ball_rgb`` says; its shadow takes ``shadow`` of the light off
     the platter.  Its image is 20 px in radius, or as ``focal`` (px) makes it, on a picture
-    ``side`` px square."""
+    ``side`` px square, on a platter of the colour ``grey`` (RGB)."""
     from turntable.video import _scene, camera
     from turntable.video.decode import Picture, lab, yuv420
 
@@ -357,7 +358,7 @@ def _shaded_ball(
     light[2] = math.cos(math.radians(zenith_deg))
     v, u = np.mgrid[0 : size[1], 0 : size[0]].astype(float)
     rays = camera.rays(pose, u, v)
-    green, grey = np.array(ball_rgb, float), np.array([150.0, 150.0, 155.0])
+    green, grey = np.array(ball_rgb, float), np.array(grey, float)
     cov, shade = _scene.sphere(rays, [tuple(ball - camera.centre(pose))], radius, pose.focal,
                                light, green, (ambient, 0.0, 1.0))  # fmt: skip
     # the shadow: the platter's points whose line to the light passes through the ball
@@ -494,6 +495,31 @@ def test_a_ball_on_a_label_of_a_like_colour_is_found_by_the_half_of_its_outline(
     got = blobs.merged_ball(picture, box, colour, centroid + np.array([1.5, -1.0]), r_px)
     assert got is not None
     assert np.hypot(got.u - centroid[0], got.v - centroid[1]) < 0.2
+
+
+@pytest.mark.parametrize("zenith", [30.0, 50.0])
+def test_a_small_ball_on_a_label_of_another_hue_is_centred_by_its_outline_against_it(zenith):
+    """A green ball 9.7 px in radius lying on a red label, its shadow on the label, on a dark
+    platter (MuJoCo, video.py's ``mujoco_1``: 0.073 R off on its frames on the label).  The
+    pixels that blend the ball's green with the label's red lie off the line from the
+    platter's colour to the ball's, and their share was cut to 0: the outline lay inside
+    the ball where it borders the label, the centre 0.063-0.11 R off (0.6-1.1 px).  On the
+    rays that end on the label the step is measured from the label's colour just outside
+    the circle to the ball's: within 0.025 R."""
+    from turntable.video.decode import lab
+
+    side = 64
+    picture, colour, _, r_px, centroid = _shaded_ball(
+        0.5, paper=(200, 40, 40), edge=2.0, focal=475.0, side=side, grey=(35, 35, 40),
+        zenith_deg=zenith,
+    )  # fmt: skip
+    assert 9.0 < r_px < 10.0
+    box = (slice(0, side), slice(0, side))
+    lab_img = lab(picture, box)
+    colour = blobs.Colour(colour, lab_img[side // 2, side - 2].astype(float))  # the platter's
+    assert colour.share(lab_img)[5, 5] == 0.0  # the label: off the line
+    (got,) = blobs.blobs(picture, box, colour, np.ones((side, side), bool), outline=r_px)
+    assert np.hypot(got.u - centroid[0], got.v - centroid[1]) < 0.025 * r_px
 
 
 def test_a_ball_on_a_label_its_share_does_not_tell_from_it_is_found_by_its_colour():

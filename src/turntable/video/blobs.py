@@ -100,6 +100,14 @@ ARC_STEP, ARC_EDGE, ARC_ACROSS = 0.05, 0.9, 1.5
 #: wrong --ball-radius) passed, and its track jumped; ``ball_size`` refuses it.
 ARC_MIN_PX = 8.0
 
+#: A ray ends on something of another hue where its colour ``OTHER_PX`` px beyond the circle
+#: (the median of these) lies off the line from the platter's colour to the ball's
+#: (`OFF_LINE`) and at least ``OTHER_CONTRAST`` of that line's length from the ball's colour;
+#: such rays are looked at again where ``OTHER_RAYS`` of them at least.
+OTHER_PX, OTHER_CONTRAST, OTHER_RAYS = (1.5, 2.25, 3.0), 0.5, 4
+#: Looked at again, the fit begins with the points within this (px) of the circle found.
+AGAIN_PX = 2.0
+
 _KERNEL = np.ones((3, 3), np.uint8)
 
 
@@ -190,7 +198,10 @@ def blobs(
     """The blobs of ``colour`` in the window ``box`` of ``picture`` (only ``allowed`` pixels).
 
     With ``outline`` (a radius, px), a round blob's centre is that of the circle of that
-    radius through its outline (`outline_centre`) instead of its weighted centroid.
+    radius through its outline (`outline_centre`) instead of its weighted centroid; where
+    that circle borders something of another hue (a red label under a green ball), the
+    outline there is found again on the step from that thing's colour to the ball's
+    (`_on_other_hue`).
     """
     if box[0].stop - box[0].start < 3 or box[1].stop - box[1].start < 3:
         return []  # a window off the image
@@ -230,7 +241,7 @@ def blobs(
         disc = math.nan
         if outline and ROUND_AREA[0] < total / (math.pi * outline**2) < ROUND_AREA[1]:
             edge = colour.edge_share(lab_img, share)
-            centre, arc = _outline(edge, centre, outline, centre)
+            centre, arc = _outline(edge, centre, outline, centre, local=(lab_img, colour))
             centre = ring.edge_centre(edge, centre, outline, centre)
             if arc:  # its shadow left out: the blob's weight within the ball's circle
                 total = float(wt[np.hypot(uu - centre[0], vv - centre[1]) < outline + ARC_PX].sum())
@@ -330,8 +341,25 @@ def outline_centre(
     return _outline(share, start, radius, fallback, rays, min_points)[0]
 
 
-def _outline(share, start, radius: float, fallback, rays: int = 48, min_points: int = 12):
-    """`outline_centre`, and whether the centre is that of the arc bordering the platter."""
+def _outline(
+    share, start, radius: float, fallback, rays: int = 48, min_points: int = 12, local=None
+):
+    """`outline_centre`, and whether the centre is that of the arc bordering the platter.
+    With ``local`` (the window's CIELAB colours and the `Colour`), the rays that end on
+    something of another hue are looked at again (`_on_other_hue`)."""
+    got = _outline_plain(share, start, radius, fallback, rays, min_points)
+    if local is None or got[0] is None or got[0] is fallback:
+        return got
+    profiles = _on_other_hue(share, *local, got[0], radius, rays)
+    if profiles is None:
+        return got
+    arc_min = ARC_MIN if got[1] else math.inf  # an arc's circle is looked for again
+    again = _outline_fit(share, got[0], radius, None, rays, min_points, arc_min, profiles)
+    return got if again is None or again[1] != got[1] else again
+
+
+def _outline_plain(share, start, radius: float, fallback, rays: int, min_points: int):
+    """`_outline` without ``local``."""
     arc_min = ARC_FIRST if radius >= ARC_MIN_PX else math.inf
     got = _outline_fit(share, start, radius, fallback, rays, min_points, arc_min)
     if got is None or not got[1]:
@@ -342,11 +370,54 @@ def _outline(share, start, radius: float, fallback, rays: int = 48, min_points: 
     return got[0], True
 
 
-def _outline_fit(share, start, radius: float, fallback, rays: int, min_points: int, arc_min):
-    """`outline_centre`'s four steps from ``start``: the centre, and whether it is an arc's
-    (None if it falls back to None)."""
-    # 1. the share along each ray, and its fall per px
+def _on_other_hue(share, lab_img, colour, start, radius: float, rays: int):
+    """The rays' profiles (`_profiles`) from ``start``, those that end on something of another
+    hue than the platter's and the ball's (a label: its colour just outside the circle lies
+    off the line from the platter's colour to each of the ball's) replaced by the step from
+    that colour to the ball's (of a ball of several colours, the one nearest its colour just
+    inside the circle); None where fewer than `OTHER_RAYS` do."""
+    a = np.linspace(0.0, 2 * math.pi, rays, endpoint=False)
+    at = radius + np.array([-OTHER_PX[1], *OTHER_PX], np.float32)  # inside, then outside
+    pu = (start[0] + np.cos(a)[:, None] * at).astype(np.float32)
+    pv = (start[1] + np.sin(a)[:, None] * at).astype(np.float32)
+    seen = cv2.remap(lab_img, pu, pv, cv2.INTER_LINEAR, borderMode=cv2.BORDER_REPLICATE)
+    outside = seen[:, 1:]  # the median of three: their sum less the largest and the least
+    inside, bg = seen[:, 0], outside.sum(1) - outside.max(1) - outside.min(1)
+    other = np.ones(rays, bool)
+    for c in colour.colours if isinstance(colour, Colours) else (colour,):
+        step = c.target - c.platter
+        step2 = float(step @ step)
+        diff = bg - c.platter.astype(np.float32)
+        along = diff @ step.astype(np.float32)
+        other &= (diff * diff).sum(1) * step2 - along * along > OFF_LINE**2 * step2 * step2
+        to = bg - c.target.astype(np.float32)
+        other &= (to * to).sum(1) > OTHER_CONTRAST**2 * step2
+    if other.sum() < OTHER_RAYS:
+        return None
+    targets = np.array(colour.targets, np.float32)
+    nearest = np.argmin(np.linalg.norm(inside[other, None] - targets, axis=-1), axis=1)
+    bg = bg[other]
+    to = targets[nearest] - bg  # from each ray's background to the ball's colour
     r, a, prof = _profiles(share, start, radius, rays)
+    pu = (start[0] + np.cos(a[other])[:, None] * r).astype(np.float32)
+    pv = (start[1] + np.sin(a[other])[:, None] * r).astype(np.float32)
+    along = cv2.remap(lab_img, pu, pv, cv2.INTER_LINEAR, borderMode=cv2.BORDER_REPLICATE)
+    prof[other] = (
+        np.einsum("krc,kc->kr", along - bg[:, None], to) / np.einsum("kc,kc->k", to, to)[:, None]
+    )
+    return r, a, prof
+
+
+def _outline_fit(
+    share, start, radius: float, fallback, rays: int, min_points: int, arc_min, profiles=None
+):
+    """`outline_centre`'s four steps from ``start``: the centre, and whether it is an arc's
+    (None if it falls back to None).  ``profiles``: `_profiles`' of the rays looked at again
+    from a centre found (`_on_other_hue`): then the fit begins with the points within
+    `AGAIN_PX` of its circle."""
+    # 1. the share along each ray, and its fall per px
+    again = profiles is not None
+    r, a, prof = profiles if again else _profiles(share, start, radius, rays)
     fall = (prof[:, :-2] - prof[:, 2:]) / (2 * RAY_STEP)  # centred, at samples 1 .. n-2
     peaked = np.maximum.accumulate(prof[:, :-2], axis=1) > THRESHOLD
     # 2. the first steep fall to near the platter on each ray
@@ -365,7 +436,9 @@ def _outline_fit(share, start, radius: float, fallback, rays: int, min_points: i
     # 3. where each crosses half-way, and its weight
     pts, weight = _outline_points(np.array(found).T, r, a, prof, fall, start)
     # 4. the circle through them
-    return _fit_outline(pts, weight, start, radius, fallback, min_points, arc_min)
+    # from a centre found (the rays looked at again): its circle's points kept first
+    keep = np.abs(np.hypot(*(pts - start).T) - radius) < AGAIN_PX if again else None
+    return _fit_outline(pts, weight, start, radius, fallback, min_points, arc_min, keep)
 
 
 def _profiles(share, start, radius: float, rays: int):
@@ -433,12 +506,13 @@ def _outline_points(found, r, a, prof, fall, start):
     return pts[weight > 0], weight[weight > 0]
 
 
-def _fit_outline(pts, weight, start, radius: float, fallback, min_points: int, arc_min):
+def _fit_outline(pts, weight, start, radius: float, fallback, min_points: int, arc_min, keep=None):
     """The centre of the circle of radius ``radius`` nearest the weighted points, refitted
     without the outliers until they stay the same (at most `EDGE_ROUNDS` fits); from the arc
     that carries the most weight (`_arc`) where that is a clearly better circle and carries
     ``arc_min`` of the weight.  With whether it is the arc's; None if it falls back to None."""
-    centre = _refit(pts, weight, start, np.ones(len(pts), bool), radius, fallback, min_points)
+    keep = np.ones(len(pts), bool) if keep is None else keep
+    centre = _refit(pts, weight, start, keep, radius, fallback, min_points)
     plain = None if centre is None else (centre, False)
     support = 0.0 if centre is None else _support(pts, weight, centre, radius)
     # no arc carries more than all the weight: the search is skipped where that cannot win

@@ -18,8 +18,9 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
+from turntable.video import hue, ring
 from turntable.video import limb as limb_module
-from turntable.video import ring
+from turntable.video.colours import OFF_LINE, Colour, Colours
 from turntable.video.decode import Picture, lab
 from turntable.video.robust import circle_centre, inliers
 
@@ -33,11 +34,6 @@ THRESHOLD = 0.45
 #: In the band about a blob, the share below which a pixel does not count.
 FLOOR = 0.25
 
-#: Colours farther than this, in units of the step from the platter's colour to the
-#: target's, from the line between them have no share.
-OFF_LINE = 0.6
-#: Lightness difference (CIELAB) from which a blob's outline is found in lightness alone.
-EDGE_LIGHTNESS = 15.0
 #: Outline points farther than this (px) from the fitted circle are left out.
 EDGE_OFF = 1.0
 #: ... and those farther than this many spreads (`turntable.video.robust.inliers`) from the
@@ -100,76 +96,11 @@ ARC_STEP, ARC_EDGE, ARC_ACROSS = 0.05, 0.9, 1.5
 #: wrong --ball-radius) passed, and its track jumped; ``ball_size`` refuses it.
 ARC_MIN_PX = 8.0
 
-#: A ray ends on something of another hue where its colour ``OTHER_PX`` px beyond the circle
-#: (the median of these) lies off the line from the platter's colour to the ball's
-#: (`OFF_LINE`) and at least ``OTHER_CONTRAST`` of that line's length from the ball's colour;
-#: such rays are looked at again where ``OTHER_RAYS`` of them at least.
-OTHER_PX, OTHER_CONTRAST, OTHER_RAYS = (1.5, 2.25, 3.0), 0.5, 4
-#: Looked at again, the fit begins with the points within this (px) of the circle found.
+#: Looked at again (``turntable.video.hue``), the fit begins with the points within this
+#: (px) of the circle found.
 AGAIN_PX = 2.0
 
 _KERNEL = np.ones((3, 3), np.uint8)
-
-
-class Colour(NamedTuple):
-    """What is looked for: its CIELAB colour, and the platter's."""
-
-    target: NDArray[np.float64]
-    platter: NDArray[np.float64]
-
-    def share(self, lab_img: NDArray[np.float32]) -> NDArray[np.float32]:
-        """The share, 0 where a colour lies farther than `OFF_LINE` times the step from the
-        line between the platter's and the target's (a label of another hue, say)."""
-        step = (self.target - self.platter).astype(np.float32)
-        step2 = float(step @ step)
-        diff = lab_img - self.platter.astype(np.float32)
-        along = diff @ step  # share * |step|^2
-        # off the line: |diff|^2 - along^2 / |step|^2 > (OFF_LINE |step|)^2
-        off2 = np.einsum("...i,...i->...", diff, diff) * step2 - along * along
-        share = along / np.float32(step2)
-        share[off2 > np.float32(OFF_LINE**2 * step2 * step2)] = 0.0
-        return share
-
-    @property
-    def targets(self) -> list[NDArray[np.float64]]:
-        """The colour looked for, as `Colours` has its colours."""
-        return [self.target]
-
-    def edge_share(
-        self, lab_img: NDArray[np.float32], share: NDArray[np.float32] | None = None
-    ) -> NDArray[np.float32]:
-        """The share in lightness alone where lightness makes at least half of the colours'
-        distance, and `EDGE_LIGHTNESS` or more (the chroma of a 4:2:0 video has half the
-        resolution), else `share` (that of ``lab_img``, if already computed)."""
-        step = float(self.target[0] - self.platter[0])
-        distance = float(np.linalg.norm(self.target - self.platter))
-        share = self.share(lab_img) if share is None else share
-        if abs(step) < max(EDGE_LIGHTNESS, 0.5 * distance):
-            return share
-        lightness = (lab_img[..., 0] - np.float32(self.platter[0])) / np.float32(step)
-        return np.where(share == 0.0, np.float32(0.0), lightness)
-
-
-class Colours(NamedTuple):
-    """A ball of several colours (white with red squares, say), each on the line from the
-    platter's: a pixel's share is the largest of its shares of them."""
-
-    colours: tuple[Colour, ...]
-
-    @property
-    def targets(self) -> list[NDArray[np.float64]]:
-        """The colours looked for (CIELAB)."""
-        return [c.target for c in self.colours]
-
-    def share(self, lab_img: NDArray[np.float32]) -> NDArray[np.float32]:
-        """The largest of the colours' `Colour.share`."""
-        return np.maximum.reduce([c.share(lab_img) for c in self.colours])
-
-    def edge_share(
-        self, lab_img: NDArray[np.float32], share: NDArray[np.float32] | None = None
-    ) -> NDArray[np.float32]:
-        """The largest of the colours' `Colour.edge_share` (``share`` is not used)."""
-        return np.maximum.reduce([c.edge_share(lab_img) for c in self.colours])
 
 
 class Blob(NamedTuple):
@@ -372,39 +303,14 @@ def _outline_plain(share, start, radius: float, fallback, rays: int, min_points:
 
 def _on_other_hue(share, lab_img, colour, start, radius: float, rays: int):
     """The rays' profiles (`_profiles`) from ``start``, those that end on something of another
-    hue than the platter's and the ball's (a label: its colour just outside the circle lies
-    off the line from the platter's colour to each of the ball's) replaced by the step from
-    that colour to the ball's (of a ball of several colours, the one nearest its colour just
-    inside the circle); None where fewer than `OTHER_RAYS` do."""
-    a = np.linspace(0.0, 2 * math.pi, rays, endpoint=False)
-    at = radius + np.array([-OTHER_PX[1], *OTHER_PX], np.float32)  # inside, then outside
-    pu = (start[0] + np.cos(a)[:, None] * at).astype(np.float32)
-    pv = (start[1] + np.sin(a)[:, None] * at).astype(np.float32)
-    seen = cv2.remap(lab_img, pu, pv, cv2.INTER_LINEAR, borderMode=cv2.BORDER_REPLICATE)
-    outside = seen[:, 1:]  # the median of three: their sum less the largest and the least
-    inside, bg = seen[:, 0], outside.sum(1) - outside.max(1) - outside.min(1)
-    other = np.ones(rays, bool)
-    for c in colour.colours if isinstance(colour, Colours) else (colour,):
-        step = c.target - c.platter
-        step2 = float(step @ step)
-        diff = bg - c.platter.astype(np.float32)
-        along = diff @ step.astype(np.float32)
-        other &= (diff * diff).sum(1) * step2 - along * along > OFF_LINE**2 * step2 * step2
-        to = bg - c.target.astype(np.float32)
-        other &= (to * to).sum(1) > OTHER_CONTRAST**2 * step2
-    if other.sum() < OTHER_RAYS:
+    hue replaced by the step from its colour to the ball's (``turntable.video.hue``); None
+    where too few do."""
+    got = hue.other_hue(lab_img, colour.lines, start, radius, rays, OFF_LINE)
+    if got is None:
         return None
-    targets = np.array(colour.targets, np.float32)
-    nearest = np.argmin(np.linalg.norm(inside[other, None] - targets, axis=-1), axis=1)
-    bg = bg[other]
-    to = targets[nearest] - bg  # from each ray's background to the ball's colour
+    other, bg, step = got
     r, a, prof = _profiles(share, start, radius, rays)
-    pu = (start[0] + np.cos(a[other])[:, None] * r).astype(np.float32)
-    pv = (start[1] + np.sin(a[other])[:, None] * r).astype(np.float32)
-    along = cv2.remap(lab_img, pu, pv, cv2.INTER_LINEAR, borderMode=cv2.BORDER_REPLICATE)
-    prof[other] = (
-        np.einsum("krc,kc->kr", along - bg[:, None], to) / np.einsum("kc,kc->k", to, to)[:, None]
-    )
+    prof[other] = hue.mix_profiles(lab_img, start, r, a[other], bg, step)
     return r, a, prof
 
 

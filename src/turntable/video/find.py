@@ -27,8 +27,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from turntable.video import camera
-from turntable.video.blobs import Colour
 from turntable.video.camera import Pose
+from turntable.video.colours import Colour
 from turntable.video.decode import Picture, VideoError, lab, window
 from turntable.video.platter import Platter
 from turntable.video.regions import MIN_CONTRAST, Candidate, _candidate, _parts, _seeded, _split

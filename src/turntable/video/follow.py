@@ -19,8 +19,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from turntable.video import camera
-from turntable.video.blobs import THRESHOLD, Blob, Colour, Colours, blobs, merged_ball
+from turntable.video.blobs import THRESHOLD, Blob, blobs, merged_ball
 from turntable.video.camera import Pose
+from turntable.video.colours import Colour, Colours
 from turntable.video.decode import Picture, VideoError, lab, rgb, window
 from turntable.video.find import RIM_MARGIN_PX, Candidate, Found
 from turntable.video.platter import Ellipse, Platter, rim_points_again

@@ -11,7 +11,8 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
-from turntable.video.blobs import THRESHOLD, Colour
+from turntable.video.blobs import THRESHOLD
+from turntable.video.colours import Colour
 from turntable.video.decode import window
 from turntable.video.platter import Platter
 

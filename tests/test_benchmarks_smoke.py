@@ -236,3 +236,44 @@ def test_a_ball_that_stays_on_a_label_of_its_colour_is_outside_the_guide(
     r = np.where((t >= 1.0) & (t < 1.0 + on_label_s), 0.03, 0.1)
     fields = ball | {"label_radius": 0.3, "platter_radius": 0.15}
     assert video.within_guide(family, fields, t, r) is within
+
+
+def test_the_ray_caster_draws_the_ball_where_its_centre_projects() -> None:
+    """``benchmarks/raycast_scene.py``: in 10 frames of a tiny SYNTHETIC scene (160x90, a
+    white ball of 5 px radius on a dark platter and label, lit from above), its bright pixels
+    near its centre's projection are centred on it within 0.5 px (a tenth of its radius:
+    perspective and shading move them a little), and it moves."""
+    sys.path.insert(0, str(BENCHMARKS))
+    scenes = importlib.import_module("raycast_scene")  # a dataclass: imported, not `_load`ed
+    scene = scenes.Scene(
+        "tiny_SYNTHETIC", "smoke test", width=160, height=90, fps=100.0, duration=0.1,
+        R=0.02, z0=(4.0, 0.0, 0.0, 2.0, 0.0, 0.0), lamps=[((0.0, 0.0, 1.0), 0.7, 0.02)],
+        label_color=(0.05, 0.05, 0.05), tilt_deg=20.0,
+    )  # fmt: skip
+    drawn = list(scenes.frames(scene))
+    assert len(drawn) == 10
+    for image, (u, v), _ in drawn:
+        assert image.shape == (90, 160, 3)
+        assert image.dtype == np.uint8
+        rows, cols = np.mgrid[0:90, 0:160]
+        near = np.hypot(cols - u, rows - v) < 10
+        ball = near & (image.mean(axis=2) > 128)
+        assert 40 < ball.sum() < 120  # a disc of radius 5 px: 79 px
+        assert abs(cols[ball].mean() - u) < 0.5
+        assert abs(rows[ball].mean() - v) < 0.5
+    assert np.hypot(*(drawn[-1][1] - drawn[0][1])) > 1.0
+
+
+def test_the_raycast_benchmark_counts_a_platter_out_of_the_frame_outside_the_guide() -> None:
+    """``benchmarks/raycast.py``: the scene whose platter is partly out of the image, and the
+    striped ball, are outside the filming guide; the wood platter's scene is within it."""
+    raycast = _load("raycast")
+    scenes = raycast.SCENES
+    assert all("SYNTHETIC" in name for name in scenes)
+    assert raycast.outside_guide(scenes["S01_SYNTHETIC_wood_platter"]) == []
+    assert raycast.outside_guide(scenes["S07_SYNTHETIC_platter_out_of_frame"]) == [
+        "the platter is not wholly inside the image"
+    ]
+    assert raycast.outside_guide(scenes["S06_SYNTHETIC_striped_ball_cw_120fps"]) == [
+        "a stripe around the ball"
+    ]

@@ -700,7 +700,7 @@ def test_a_camera_nearly_straight_down_says_how_far_its_scale_may_be_off() -> No
     carry): the focal length, seen only in the images' ellipticity, is put 39 % long and
     the distance with it, and the plane of the ball's centre (R = 9 mm) is scaled by 0.48 %
     about the axis.  The standard error of the distance covers that within 2 of it (the
-    images' own scatter, 0.12 in ln d, put it 2.8 off; `calibrate.MARK_SHAPE`), and so does
+    images' own scatter, 0.12 in ln d, put it 2.8 off; `covariance.MARK_SHAPE`), and so does
     the scale it gives the positions (R / d times it)."""
     from turntable.video.calibrate import MAX_K1, calibrate
     from turntable.video.camera import Pose, project, sphere_centre

@@ -29,10 +29,10 @@ errors of the camera and the covariance of the parameters carry (``Lens``).
 
 A camera looking nearly straight down shows its focal length, apart from its tilt, only in
 the ellipticity of its images, of the order of the tilt squared: an error of their shape of a
-ten-thousandth of their size (``MARK_SHAPE``), which the mark's tracked images carry, moves
-it, and the distance with it, far beyond the scatter of the images.  The covariance of the
-parameters carries it (``_focal_floor``), and with it the scale of the plane of the ball's
-centre, R above the platter, seen from that distance.
+ten-thousandth of their size, which the mark's tracked images carry, moves it, and the
+distance with it, far beyond the scatter of the images.  The covariance of the parameters
+carries it (``turntable.video.covariance``), and with it the scale of the plane of the
+ball's centre, R above the platter, seen from that distance.
 """
 
 from __future__ import annotations
@@ -46,6 +46,7 @@ from scipy.optimize import least_squares
 
 from turntable.video import camera
 from turntable.video.camera import Pose
+from turntable.video.covariance import covariance, focal_floor, follows_held, lag1
 from turntable.video.platter import Ellipse
 
 #: Spread of the priors on ln(focal length / image width), on the roll (rad) and on the
@@ -70,14 +71,6 @@ RIM_BIAS = 0.001
 #: distortion moves the corners of a 60-degree field of view inward by up to 5 %: k1 = -0.114;
 #: a wide-angle or fisheye lens bends more than this model describes).
 LENS_Z, MAX_K1 = 5.0, 0.15
-#: The shape of the images of the mark's circle is known to this share of its size at best,
-#: however many its points: its tracked centre carries errors of ~0.01 px that repeat at the
-#: same place of the image on every turn (the harmonics of the residuals of
-#: phone_lens_7_SYNTHETIC against its true camera: 0.005-0.013 px on a circle of 135 px).
-#: To first order in the tilt b, a camera's image of the platter's plane depends on b and
-#: the focal length f through b / f only; f itself is seen in the ellipticity of the images,
-#: of order b^2, and so ln f is measured to `MARK_SHAPE` / b^2 at best (`_focal_floor`).
-MARK_SHAPE = 1e-4
 #: Rows are read from the top down within this many frame intervals: where the readout is
 #: hard to tell from the camera's tilt (a camera looking nearly straight down), the bounds
 #: keep it physical.
@@ -156,7 +149,7 @@ class Calibration(NamedTuple):
     parameters, covariance : numpy.ndarray
         The fitted parameters (`_At`) and their covariance, the uncertainty of k1 and what
         follows from it included, and the images' systematic error of the focal length
-        (`MARK_SHAPE`).
+        (``turntable.video.covariance.MARK_SHAPE``).
     interval : float
         The frame interval, s (the unit of the readout time among the parameters).
     """
@@ -281,12 +274,6 @@ class _Problem:
         return theta
 
 
-def _lag1(e: NDArray) -> float:
-    e = e - e.mean(axis=0)
-    den = float(np.sum(e * e))
-    return float(np.sum(e[1:] * e[:-1]) / den) if den > 0 else 0.0
-
-
 def _rim_fit(prob: _Problem, b0: float, roll0: float) -> NDArray:
     """The camera's six parameters from the rim alone."""
     size, rim, platter_radius = prob.size, prob.ellipse, prob.p
@@ -328,7 +315,7 @@ def _fit(prob: _Problem, b0: float, roll0: float) -> tuple[NDArray, NDArray]:
         # the rim seen on several frames is one edge: its points count as those of one frame,
         # widened for their correlation along the rim
         rim_res = prob.rim(theta)
-        r1 = max(_lag1(rim_res[:, None]), 0.0)
+        r1 = max(lag1(rim_res[:, None]), 0.0)
         widen = math.sqrt(prob.rim_frames * (1 + r1) / (1 - min(r1, 0.99)))
         prob.sigma_rim *= max(float(np.sqrt(np.mean(rim_res**2))), 1e-3) * (widen if _ else 1.0)
         if _:  # each of the ellipse's numbers known to RIM_BIAS at best
@@ -373,7 +360,7 @@ def _lens(prob: _Problem, theta: NDArray) -> tuple[float, float]:
     res = prob.mark(theta).reshape(-1, 2) * prob.sigma_mark
     scale = max(float(np.sqrt(np.mean(res**2))), 1e-3) / prob.sigma_mark
     cov = np.linalg.pinv(jac.T @ jac) * scale**2
-    r1 = _lag1(res)
+    r1 = lag1(res)
     if r1 > 0:
         cov *= (1 + r1) / (1 - r1)
     return float(theta[_At.K1]), float(math.sqrt(max(cov[-1, -1], 0.0)))
@@ -435,10 +422,11 @@ def calibrate(
     # and within the lenses the model takes (+-MAX_K1) however poorly the mark measures it
     k1_spread = k1_se if lens else min(math.hypot(k1, k1_se), MAX_K1)
     mark_res = prob.mark(theta).reshape(-1, 2) * prob.sigma_mark
-    r1 = _lag1(mark_res)
+    r1 = lag1(mark_res)
     k1_shift = k1_spread * _follows_k1(prob, theta, jac)
-    focal_shift = _focal_floor(prob, theta, jac, r1) * _follows_focal(jac)
-    cov = _covariance(jac, r1, k1_shift, focal_shift)
+    floor = focal_floor(jac, r1, prob.prior_log_focal, float(theta[_At.TILT]), _At.LOG_FOCAL)
+    focal_shift = floor * np.r_[follows_held(jac, _At.LOG_FOCAL), 0.0]  # k1 held at 0
+    cov = covariance(jac, r1, _At.HELD_K1, _At.SIZE, k1_shift, focal_shift)
     g0 = _derived(theta, size)
     grad = _derived_gradient(theta, size)
     se = np.sqrt(np.maximum(np.einsum("ij,jk,ik->i", grad, cov, grad), 0.0))
@@ -461,35 +449,6 @@ def calibrate(
     )
 
 
-def _focal_floor(prob: _Problem, theta: NDArray, jac: NDArray, r1: float) -> float:
-    """The standard error that the images' systematic errors (`MARK_SHAPE`) add to the fitted
-    ln f, beyond the fit's own.
-
-    The fit (``theta``, ``jac``: k1 held) weighs the images as if their scatter were all their
-    error: its ln f is the weighted mean of the images' own, of variance s_i^2, and the
-    prior's (``prob.prior_log_focal``^2 = s_p^2), the images' weight w = s_p^2 /
-    (s_p^2 + s_i^2).  Their systematic error, `MARK_SHAPE` / b^2 in ln f (b the tilt), moves
-    the fitted ln f by w times it.  At a tilt of several degrees it is a fraction of the
-    fit's own; for a camera looking nearly straight down it is the larger part.
-    """
-    i = _At.LOG_FOCAL
-    var = float(np.linalg.pinv(jac.T @ jac)[i, i]) * ((1 + r1) / (1 - r1) if r1 > 0 else 1.0)
-    prior = prob.prior_log_focal**2
-    var = min(var, prior * (1 - 1e-9))
-    own = 1.0 / (1.0 / var - 1.0 / prior)  # the images' alone
-    floor = min(MARK_SHAPE / max(float(theta[_At.TILT]) ** 2, 1e-12), 1e6)
-    return prior / (prior + own) * floor
-
-
-def _follows_focal(jac: NDArray) -> NDArray:
-    """d theta / d ln f: how the fitted parameters follow a change of ln f held (1 in ln f,
-    k1 held at 0), from the Jacobian of the fit with k1 held."""
-    i = _At.LOG_FOCAL
-    others = np.delete(jac, i, axis=1)
-    shift = -np.linalg.pinv(others.T @ others) @ others.T @ jac[:, i]
-    return np.r_[np.insert(shift, i, 1.0), 0.0]
-
-
 def _follows_k1(prob: _Problem, theta: NDArray, jac: NDArray) -> NDArray:
     """d theta / d k1: how the fitted parameters follow a change of the held k1 (1 in k1)."""
     e = np.zeros_like(theta)
@@ -497,20 +456,6 @@ def _follows_k1(prob: _Problem, theta: NDArray, jac: NDArray) -> NDArray:
     change = prob.all(theta + e) - prob.all(theta - e)
     shift = -np.linalg.pinv(jac.T @ jac) @ jac.T @ change
     return np.r_[shift / 2e-6, 1.0]
-
-
-def _covariance(jac: NDArray, r1: float, *shifts: NDArray) -> NDArray:
-    """The parameters' covariance: the fit's (k1 held), widened by sqrt((1 + r) / (1 - r))
-    for the mark's lag-1 autocorrelation r > 0, plus the shift of all of them with each of
-    ``shifts`` (k1 by its standard error; ln f by the images' systematic error,
-    `_focal_floor`)."""
-    cov = np.zeros((_At.SIZE, _At.SIZE))
-    cov[_At.HELD_K1, _At.HELD_K1] = np.linalg.pinv(jac.T @ jac)
-    if r1 > 0:
-        cov *= (1 + r1) / (1 - r1)
-    for shift in shifts:
-        cov += np.outer(shift, shift)
-    return cov
 
 
 def _derived_gradient(theta: NDArray, size: tuple[int, int]) -> NDArray:

@@ -13,9 +13,13 @@ from __future__ import annotations
 
 import math
 
-import cv2
 import numpy as np
 from numpy.typing import NDArray
+
+try:
+    import cv2
+except ImportError:  # without the extra [video]
+    cv2 = None
 
 __all__ = ["OTHER_CONTRAST", "OTHER_PX", "OTHER_RAYS", "mix_profiles", "other_hue"]
 

@@ -57,7 +57,7 @@ MIN_RIM_CONTRAST = 8.0
 #: A warning where the camera's distance, which the ball's height above the platter is seen
 #: from, is known so poorly (a camera looking nearly straight down) that two of its standard
 #: errors move the positions at the rim by more than this (ball radii): one may not be all it
-#: is off by (``turntable.video.calibrate.MARK_SHAPE``).
+#: is off by (``turntable.video.covariance.MARK_SHAPE``).
 DISTANCE_WARNING_R = 0.05
 
 

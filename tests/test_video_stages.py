@@ -651,6 +651,20 @@ def test_the_lens_s_distortion_is_measured_on_the_mark_s_track(k1: float, bias_p
     assert abs(cal.omega / 3.49 - 1) < 1e-5
 
 
+def test_a_k1_at_its_bound_is_not_a_measurement(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The mark's track putting k1 at +-MAX_K1 (within a few millionths, where the fit stops)
+    says the bound, not the lens: the camera is a pinhole's, k1 = 0 within MAX_K1."""
+    from turntable.video import calibrate as c
+    from turntable.video.camera import Pose
+
+    monkeypatch.setattr(c, "_lens", lambda prob, theta: (c.MAX_K1 * (1 - 2e-6), 0.013))
+    true = Pose(1108.0, math.radians(32.0), math.radians(3.0), (0.0, -0.005), 0.44, (1280, 720))
+    cal = c.calibrate(*_rim_and_mark(true, 0.0, 0.05, seed=7))
+    assert not cal.lens.measured
+    assert cal.derived["lens_k1"] == 0.0
+    assert cal.lens.spread == pytest.approx(c.MAX_K1)
+
+
 def test_a_rim_stretched_by_a_pixel_does_not_tilt_a_camera_looking_straight_down() -> None:
     """A camera 0.55 m above the platter, tilted by 0.6 degrees (1920x1080, a field of view of
     60 degrees), sees a rim whose edge is stretched by half a pixel each way along one

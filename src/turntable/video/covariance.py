@@ -1,7 +1,7 @@
 """The covariance of a calibration's parameters (``turntable.video.calibrate``): the fit's,
 widened for the mark's correlated errors, plus the systematic shifts of all the parameters
 with one held (the lens's k1 by its uncertainty; the focal length by the images' systematic
-error, `focal_floor`).
+error, ``focal_floor``).
 """
 
 from __future__ import annotations

@@ -5,8 +5,8 @@ The outline is found along the line of colours from the platter's to the ball's
 a red label), the pixels just outside its circle are off that line, and so are those that
 blend the label's colour with the ball's: the outline is cut short there, up to 1.6 px
 inside the ball on its shaded side.  On such a ray the colour just outside the circle is
-the background (`other_hue`), and the outline is looked for again on the step from it to
-the ball's colour (`mix_profiles`).
+the background (``other_hue``), and the outline is looked for again on the step from it to
+the ball's colour (``mix_profiles``).
 """
 
 from __future__ import annotations

@@ -1,6 +1,6 @@
 """How a fit's coefficient follows a change of its film: the linear response of the
 least-squares estimate, (J^T J)^-1 J^T (change of the residuals), by one Gauss-Newton step
-from the fit (`coefficient_response`), or as the weight of each position
+from the fit (`fit_response`), or as the weight of each position
 (`coefficient_influence`); a camera's calibration and a tracker's smooth error are carried
 into a coefficient's standard error with them (`turntable.video.uncertainty`).
 """
@@ -17,7 +17,7 @@ from turntable.fit.lsq import _dimensionless, _Fitter, _least_squares
 from turntable.fit.parameters import _layout
 
 
-def coefficient_response(
+def fit_response(
     film: Film,
     setup: Setup,
     model: str,
@@ -25,13 +25,14 @@ def coefficient_response(
     *,
     fit_omega: bool = False,
     fit_axis: bool = False,
-) -> NDArray[np.float64]:
-    """Return how ln c of a fit moves, to first order, when the film and the setup are
-    replaced by each of ``variants`` (the same frames, measured by another camera).
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Return how ln c and ln RSS of a fit move, to first order, when the film and the setup
+    are replaced by each of ``variants`` (the same frames, measured by another camera).
 
     One Gauss-Newton step from the fit of ``film`` on each variant, less the step on
     ``film`` itself: the linear response of the least-squares estimate,
-    (J^T J)^-1 J^T (change of the residuals), without a fit per variant.
+    (J^T J)^-1 J^T (change of the residuals), without a fit per variant; the residual sum of
+    squares after the step, RSS = |r + J step|^2, is that of the linearised refit.
 
     Parameters
     ----------
@@ -42,28 +43,6 @@ def coefficient_response(
         Each with as many frames as ``film``.
     fit_omega, fit_axis : bool
         As in `fit_model`.
-
-    Returns
-    -------
-    numpy.ndarray
-        The change of ln c for each variant.
-    """
-    return fit_response(film, setup, model, variants, fit_omega=fit_omega, fit_axis=fit_axis)[0]
-
-
-def fit_response(
-    film: Film,
-    setup: Setup,
-    model: str,
-    variants: list[tuple[Film, Setup]],
-    *,
-    fit_omega: bool = False,
-    fit_axis: bool = False,
-) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """Return how ln c and ln RSS of a fit move, to first order, on each of ``variants``.
-
-    As `coefficient_response`; the residual sum of squares after the Gauss-Newton step,
-    RSS = |r + J step|^2, is that of the linearised refit.
 
     Returns
     -------
@@ -98,7 +77,7 @@ def coefficient_influence(
     order, when the film's positions move by small amounts.
 
     The row of ln c in the pseudo-inverse J^+ of the residuals' Jacobian (m) at the fit: a
-    move dxy of the positions moves ln c by sum(influence * dxy), as `coefficient_response`
+    move dxy of the positions moves ln c by sum(influence * dxy), as `fit_response`
     finds for the film so moved.
 
     Parameters

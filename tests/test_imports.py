@@ -1,68 +1,23 @@
-"""The package's structure: no import cycle among its modules, no module over 500 lines.
+"""The package's structure: no import cycle among its modules, no module over 500 lines;
+and the code of a job (`turntable._imports.code_of`) holds every module a run imports.
 
-Every module of src/turntable is parsed with `ast` (nothing is imported): its imports at
-the top and inside functions, relative ones resolved.  Importing a submodule runs the
-packages above it first, so ``turntable.film`` importing ``turntable.fit.models`` depends
-on ``turntable.fit`` too (but a module does not depend on the packages it is part of).
+The import graph is read with `ast` (nothing imported): ``turntable.film`` importing
+``turntable.fit.models`` depends on ``turntable.fit`` too (but a module does not depend on
+the packages it is part of).
 """
 
 from __future__ import annotations
 
-import ast
+import json
 import subprocess
 import sys
-from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
 
-import turntable
+from turntable._imports import code_of, import_graph, module_names
 
-PACKAGE = Path(turntable.__file__).resolve().parent
 MAX_LINES = 500
-
-
-def _module_names(root: Path = PACKAGE) -> dict[str, Path]:
-    """Dotted name of every module of the package, e.g. ``turntable.fit.lsq``."""
-    out = {}
-    for path in sorted(root.rglob("*.py")):
-        parts = (root.name, *path.relative_to(root).with_suffix("").parts)
-        if parts[-1] == "__init__":
-            parts = parts[:-1]
-        out[".".join(parts)] = path
-    return out
-
-
-def _imported(name: str, path: Path) -> Iterator[str]:
-    """Dotted names that the module ``name`` at ``path`` imports, anywhere in it."""
-    package = name if path.name == "__init__.py" else name.rpartition(".")[0]
-    for node in ast.walk(ast.parse(path.read_text(), str(path))):
-        if isinstance(node, ast.Import):
-            yield from (a.name for a in node.names)
-        elif isinstance(node, ast.ImportFrom):
-            base = package.split(".")[: len(package.split(".")) - node.level + 1]
-            stem = ".".join(base + ([node.module] if node.module else []))
-            if node.level == 0:
-                stem = node.module or ""
-            yield stem
-            yield from (f"{stem}.{a.name}" for a in node.names)
-
-
-def import_graph(root: Path = PACKAGE) -> dict[str, set[str]]:
-    """For each module of the package, the modules of the package that importing it runs."""
-    modules = _module_names(root)
-    graph: dict[str, set[str]] = {}
-    for name, path in modules.items():
-        targets = set()
-        for imported in _imported(name, path):
-            parts = imported.split(".")
-            for i in range(1, len(parts) + 1):
-                target = ".".join(parts[:i])
-                if target in modules and not name.startswith(target + "."):
-                    targets.add(target)
-        targets.discard(name)
-        graph[name] = targets
-    return graph
 
 
 def find_cycle(graph: dict[str, set[str]]) -> list[str]:
@@ -94,9 +49,9 @@ def test_no_import_cycle() -> None:
     assert find_cycle(graph) == [], " -> ".join(find_cycle(graph))
 
 
-@pytest.mark.parametrize("name", sorted(_module_names()))
+@pytest.mark.parametrize("name", sorted(module_names()))
 def test_module_is_short(name: str) -> None:
-    n = len(_module_names()[name].read_text().splitlines())
+    n = len(module_names()[name].read_text().splitlines())
     assert n <= MAX_LINES, f"{name}: {n} lines"
 
 
@@ -131,3 +86,73 @@ def test_importing_loads_no_heavy_library(module: str) -> None:
     loaded = {name.split(".")[0] for name in out.stdout.split()}
     assert "numpy" in loaded
     assert loaded & {"scipy", "sympy", "matplotlib"} == set()
+
+
+# Every module imported alone, in one interpreter: the package's modules it loaded.
+_LOADED = """
+import importlib, json, sys
+out = {}
+for name in json.loads(sys.argv[1]):
+    for m in [m for m in sys.modules if m == "turntable" or m.startswith("turntable.")]:
+        del sys.modules[m]
+    importlib.import_module(name)
+    out[name] = sorted(m for m in sys.modules if m.split(".")[0] == "turntable")
+print(json.dumps(out))
+"""
+
+
+def test_code_of_a_module_holds_every_module_its_import_loads() -> None:
+    """The second route: what Python loads, against what `code_of` reads from the source."""
+    names = sorted(n for n in module_names() if not n.endswith("__main__"))
+    out = subprocess.run(
+        [sys.executable, "-c", _LOADED, json.dumps(names)],
+        capture_output=True,
+        text=True,
+        check=True,
+    )
+    files = {path: name for name, path in module_names().items()}
+    missing = {}
+    for name, loaded in json.loads(out.stdout).items():
+        static = {files[p] for p in code_of(name) if p in files}
+        if set(loaded) - static:
+            missing[name] = sorted(set(loaded) - static)
+    assert len(names) > 50
+    assert missing == {}
+
+
+def test_code_of_follows_scripts_lazy_imports_and_data(tmp_path: Path) -> None:
+    """A script's import of a module beside it is followed; a function's import counts; a
+    package importing by name runs all its submodules; a data file goes with the module that
+    names it or its folder, and only with that one."""
+    pkg = tmp_path / "turntable"
+    for folder in ["claims", "templates", "video"]:
+        (pkg / folder).mkdir(parents=True)
+    (pkg / "__init__.py").write_text("")
+    (pkg / "_templates.py").write_text("LOADER = ('turntable', 'templates')\n")
+    (pkg / "templates" / "page.html.j2").write_text("")
+    (pkg / "claims" / "__init__.py").write_text(
+        "import importlib\nfor n in ['a']:\n    importlib.import_module(f'{__name__}.{n}')\n"
+    )
+    (pkg / "claims" / "a.py").write_text("def f():\n    from .. import _templates\n")
+    (pkg / "video" / "__init__.py").write_text("")
+    (pkg / "video" / "track.py").write_text("")
+    scripts = tmp_path / "scripts"
+    scripts.mkdir()
+    (scripts / "page.py").write_text("from helper import run\n")
+    (scripts / "helper.py").write_text("import turntable.claims\n")
+
+    def relative(*entries):
+        return sorted(str(p.relative_to(pkg)) for p in code_of(*entries, root=pkg))
+
+    assert relative(scripts / "page.py") == [
+        "__init__.py",
+        "_templates.py",
+        "claims/__init__.py",
+        "claims/a.py",
+        "templates/page.html.j2",
+    ]
+    assert relative("turntable.video.track") == [
+        "__init__.py",
+        "video/__init__.py",
+        "video/track.py",
+    ]

@@ -31,7 +31,7 @@ CAMPAIGN_OUTPUTS = expand("results/campaign/summary.{ext}", ext=["csv", "pdf", "
 
 rule campaign_film:
     input:
-        code=PACKAGE,
+        code=CAMPAIGN_CODE,
     output:
         ensure("results/campaign/films/{film}", non_empty=True),
     log:
@@ -54,7 +54,7 @@ rule campaign_film:
 rule campaign_fit:
     input:
         films=lambda w: [CAMPAIGN_FILMS[f].path for f in CAMPAIGN_BATCHES[w.batch]],
-        code=PACKAGE,
+        code=CAMPAIGN_CODE,
     output:
         ensure("results/campaign/fits/batch_{batch}.json", non_empty=True),
     log:

@@ -24,7 +24,7 @@ rule claims:
 rule claims_table:
     input:
         "results/claims.json",
-        code=PACKAGE,
+        code=code_of(ROOT / "workflow/scripts/claims_table.py"),
     output:
         ensure(
             report(

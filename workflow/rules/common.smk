@@ -1,10 +1,11 @@
-# The configuration, checked, and what the rules share: the figures, the package's files,
+# The configuration, checked, and what the rules share: the figures, the code a job runs,
 # the inputs of a job that runs a script of scripts/ (through Snakemake's script:).
 import json
 import os
 from pathlib import Path
 
 import turntable
+import turntable._imports
 import turntable.config
 import yaml
 from snakemake.exceptions import WorkflowError
@@ -52,17 +53,23 @@ _commit, _dirty = git_state(ROOT)
 GIT_STATE = f"{_commit} (dirty)" if _dirty else _commit
 
 FIGURES = yaml.safe_load(Path(workflow.basedir, "figures.yaml").read_text())
-PACKAGE = sorted(
-    str(p.relative_to(ROOT))
-    for p in (ROOT / "src" / "turntable").rglob("*")
-    if p.suffix in {".py", ".yaml", ".j2"} and not p.name.startswith(".")
-)
 STYLE = ["scripts/_style/__init__.py", "scripts/_style/turntable.mplstyle"]
+
+
+def code_of(*entries):
+    """The package's files that the entries run (turntable._imports.code_of), as inputs."""
+    return [str(p.relative_to(ROOT)) for p in turntable._imports.code_of(*entries)]
+
+
+# `turntable ...` and `python -m turntable.campaign ...`: the code of a shell command's job.
+CLI = code_of("turntable.cli")
+CAMPAIGN_CODE = code_of("turntable.campaign")
 
 
 def script_inputs(name, style=()):
     """Inputs of the job that runs scripts/<name>.py: the script and the code it runs."""
-    return {"script": f"scripts/{name}.py", "code": [*PACKAGE, *style]}
+    script = f"scripts/{name}.py"
+    return {"script": script, "code": [*code_of(ROOT / script), *style]}
 
 
 def moved_outputs(job, folder):

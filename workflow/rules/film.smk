@@ -42,7 +42,7 @@ rule synthetic_film:
 rule fit_film:
     input:
         csv="results/film/{film}.csv",
-        code=PACKAGE,
+        code=CLI,
     output:
         ensure("results/film/{film}.json", non_empty=True),
     log:
@@ -74,7 +74,7 @@ rule film_page:
             "workflow/report/{name}.rst", name=["fig8_measurability", "fig9_fit"]
         ),
         code=[
-            *PACKAGE,
+            *code_of(ROOT / "workflow/scripts/film_page.py"),
             "workflow/scripts/report_figure.py",
             "workflow/templates/figure.html.j2",
         ],

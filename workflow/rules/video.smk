@@ -28,7 +28,7 @@ VIDEO_BALL = Film(
 
 rule render_video:
     input:
-        code=PACKAGE,
+        code=CAMPAIGN_CODE,
     output:
         video=ensure(VIDEO, non_empty=True),
         truth=ensure(VIDEO_TRUTH, non_empty=True),
@@ -49,7 +49,7 @@ rule render_video:
 rule track_video:
     input:
         video=VIDEO,
-        code=PACKAGE,
+        code=CLI,
     output:
         csv=ensure(VIDEO_TRACK, non_empty=True),
         json=ensure(VIDEO_TRACK.replace(".csv", ".json"), non_empty=True),
@@ -71,7 +71,7 @@ rule fit_video:
     input:
         track=VIDEO_TRACK,
         calibration=VIDEO_TRACK.replace(".csv", ".json"),
-        code=PACKAGE,
+        code=CLI,
     output:
         ensure(VIDEO_FIT, non_empty=True),
     log:

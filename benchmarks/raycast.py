@@ -58,6 +58,7 @@ import numpy as np
 from raycast_scene import SCENES, Camera, Scene, frames, render, seeds, simulate
 from results_file import ROOT, merge_results
 from turntable._blas import one_blas_thread
+from turntable.video.uncertainty import TRACKER_ERROR
 from video import ON_LABEL_S, SAME_COLOUR, WRONG_OMEGA, WRONG_RMS, WRONG_Z
 
 #: The command line of the package installed beside this Python.
@@ -205,6 +206,7 @@ def track_and_fit(
     fit = json.loads(p.stdout)
     slipping = fit.get("slipping") or {}
     mu0, se = slipping.get("mu0"), slipping.get("mu0_stderr")
+    parts = fit["video"]["stderr_parts"]["slipping"]
     row |= {
         "selected": fit.get("selected"),
         "decisive": (fit.get("selection") or {}).get("decisive"),
@@ -212,8 +214,15 @@ def track_and_fit(
         "mu0_stderr": se,
         "mu0_limits": {k: v for k, v in slipping.items() if "limit" in k},
         "z": (mu0 - sc.mu0) / se if mu0 is not None and se else None,
+        # the parts of the standard error, for benchmarks/tracker_error.py
+        "at_bound": bool(slipping.get("at_bound")),
+        **{f"stderr_{p}": parts[f"mu0_stderr_{p}"] for p in _PARTS},
+        "tracker_error": TRACKER_ERROR,
     }
     return row
+
+
+_PARTS = ("statistical", "calibration", "tracker")
 
 
 def verdict(row: dict[str, Any]) -> str:

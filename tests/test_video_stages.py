@@ -336,6 +336,7 @@ def _shaded_ball(
     focal: float = 1000.0,
     side: int = 96,
     grey=(150.0, 150.0, 155.0),
+    highlight: tuple[float, float] = (0.0, 1.0),
 ) -> tuple:
     """A green ball lit from one side, low (``zenith_deg``: 50 degrees from the zenith), on a
     grey platter with its shadow, drawn as `turntable.video.render` draws it (`_scene.sphere`:
@@ -347,7 +348,8 @@ def _shaded_ball(
     it; or of the colour ``paper`` (RGB), its edge ``edge`` of R beyond the ball's centre.
     The ball is green unless ``ball_rgb`` says; its shadow takes ``shadow`` of the light off
     the platter.  Its image is 20 px in radius, or as ``focal`` (px) makes it, on a picture
-    ``side`` px square, on a platter of the colour ``grey`` (RGB)."""
+    ``side`` px square, on a platter of the colour ``grey`` (RGB); ``highlight``: the peak and
+    the exponent of its highlight (none by default)."""
     from turntable.video import _scene, camera
     from turntable.video.decode import Picture, lab, yuv420
 
@@ -360,7 +362,7 @@ def _shaded_ball(
     rays = camera.rays(pose, u, v)
     green, grey = np.array(ball_rgb, float), np.array(grey, float)
     cov, shade = _scene.sphere(rays, [tuple(ball - camera.centre(pose))], radius, pose.focal,
-                               light, green, (ambient, 0.0, 1.0))  # fmt: skip
+                               light, green, (ambient, *highlight))  # fmt: skip
     # the shadow: the platter's points whose line to the light passes through the ball
     xy = camera.back_project(pose, np.stack([u, v], axis=-1))
     p = np.dstack([xy, np.zeros(u.shape)]) - ball
@@ -543,6 +545,34 @@ def test_a_ball_on_a_label_its_share_does_not_tell_from_it_is_found_by_its_colou
     got = blobs.merged_ball(picture, box, colour, centroid + np.array([1.5, -1.0]), r_px)
     assert got is not None
     assert np.hypot(got.u - centroid[0], got.v - centroid[1]) < 0.6
+
+
+@pytest.mark.parametrize("edge", [-0.3, 0.0])
+def test_a_red_ball_by_a_salmon_label_with_its_shadow_on_it_is_told_from_it_by_chromaticity(edge):
+    """A red ball (RGB 200, 30, 30) beside a salmon label (225, 108, 89) on a grey platter, lit
+    from 20 degrees off the zenith, with a highlight; its shadow and its shaded limb lie on
+    the label's side (the ray caster's S11: lost for 14 frames, and the video refused).  The
+    label's share on the line from the grey to the red is 0.7, and the ball's blob runs into
+    it; by CIELAB distance the ball's dark red limb and its dark salmon shadow are alike, and
+    the ball was not found.  By chromaticity, which shading leaves as it is, the ball is told
+    from the label and its shadow: the centre within 0.02 R."""
+    from turntable.video.decode import lab
+
+    side = 192
+    picture, colour, _, r_px, centroid = _shaded_ball(
+        0.3, paper=(225, 108, 89), edge=edge, ball_rgb=(200, 30, 30), zenith_deg=20.0,
+        shadow=0.7, focal=2000.0, side=side, highlight=(0.4, 30.0),
+    )  # fmt: skip
+    assert 40.0 < r_px < 42.0
+    box = (slice(0, side), slice(0, side))
+    lab_img = lab(picture, box)
+    colour = blobs.Colour(colour, lab_img[side - 6, side - 6].astype(float))  # the platter's
+    assert colour.share(lab_img)[5, 5] > 0.6  # the label: far along the line to the ball's
+    (merged,) = blobs.blobs(picture, box, colour, np.ones((side, side), bool), outline=r_px)
+    assert merged.area > 2 * math.pi * r_px**2
+    got = blobs.merged_ball(picture, box, colour, centroid + np.array([1.5, -1.0]), r_px)
+    assert got is not None
+    assert np.hypot(got.u - centroid[0], got.v - centroid[1]) < 0.02 * r_px
 
 
 def test_a_ball_of_two_colours_is_followed_by_both():

@@ -18,7 +18,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
-from turntable.video import hue, ring
+from turntable.video import chroma, hue, ring
 from turntable.video import limb as limb_module
 from turntable.video.colours import OFF_LINE, Colour, Colours
 from turntable.video.decode import Picture, lab
@@ -196,7 +196,9 @@ def merged_ball(
     ``near``; None if not (a label of the ball's own colour hides more than that).  Where the
     share does not tell the ball from what it runs into (a red label under an orange ball on a
     grey platter: both far along the line from the grey to the orange), the outline is looked
-    for again with the ball's colour told from that thing's (`_told_from_around`)."""
+    for again with the ball's colour told from that thing's (`_told_from_around`), and then,
+    on the rays that end on it, by chromaticity (a red ball by a salmon label, its shaded limb
+    and its shadow on the label alike in CIELAB: ``turntable.video.chroma``)."""
     lab_img = lab(picture, box)
     start = np.array([near[0] - box[1].start, near[1] - box[0].start])
     h, w = lab_img.shape[:2]
@@ -207,13 +209,15 @@ def merged_ball(
         return None
     edge = colour.edge_share(lab_img, share)
     centre = outline_centre(edge, start, radius, None, min_points=MERGED_POINTS)
+    told = None
     if centre is None:
-        edge = _told_from_around(lab_img, share, edge, colour, start, radius)
-        centre = (
-            None
-            if edge is None
-            else outline_centre(edge, start, radius, None, min_points=MERGED_POINTS)
-        )
+        told = _told_from_around(lab_img, share, edge, colour, start, radius)
+    if told is not None:
+        centre = outline_centre(told[0], start, radius, None, min_points=MERGED_POINTS)
+    if centre is None and told is not None:  # a label of the ball's hue, paler
+        label = chroma.on_label(share, start, radius, 48, THRESHOLD)
+        apart = chroma.told_apart(lab_img, edge, colour.targets, told[1], start, radius, label)
+        centre = outline_centre(apart, start, radius, None, min_points=MERGED_POINTS)
     if centre is None or np.hypot(*(centre - start)) > MERGED_REACH * radius:
         return None
     return Blob(float(centre[0]) + box[1].start, float(centre[1]) + box[0].start,
@@ -224,7 +228,8 @@ def _told_from_around(lab_img, share, edge, colour, start, radius: float):
     """``edge`` where the ball's blob runs into something of another colour (`AROUND`):
     each pixel's share weighed by how much nearer the ball's colour it lies than that
     thing's (1 on the ball, 0 on it, 1/2 half-way), so that the ball's outline is seen
-    against it too; None where nothing of another colour lies around the ball."""
+    against it too, and that thing's colour; None where nothing of another colour lies
+    around the ball."""
     h, w = share.shape
     vv, uu = np.mgrid[0:h, 0:w]
     beyond = (share > THRESHOLD) & (np.hypot(uu - start[0], vv - start[1]) > AROUND * radius)
@@ -238,7 +243,7 @@ def _told_from_around(lab_img, share, edge, colour, start, radius: float):
     )
     to_other = np.linalg.norm(lab_img - other.astype(np.float32), axis=-1)
     nearer = 0.5 + (to_other - to_ball) / np.maximum(to_other + to_ball, 1e-6)
-    return edge * np.clip(nearer, 0.0, 1.0).astype(np.float32)
+    return edge * np.clip(nearer, 0.0, 1.0).astype(np.float32), other
 
 
 def outline_centre(

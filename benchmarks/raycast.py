@@ -63,6 +63,8 @@ from video import ON_LABEL_S, SAME_COLOUR, WRONG_OMEGA, WRONG_RMS, WRONG_Z
 
 #: The command line of the package installed beside this Python.
 TURNTABLE = str(Path(sys.executable).with_name("turntable"))
+#: The parts of a coefficient's standard error that a row records (``turntable fit``'s).
+_PARTS = ("statistical", "calibration", "tracker")
 #: A bitrate (bit/s) below this is not a camera's or a phone's usual one (the guide's
 #: "Compression"; phones record 720p at several Mbit/s).
 USUAL_BITRATE = 1_000_000
@@ -220,9 +222,6 @@ def track_and_fit(
         "tracker_error": TRACKER_ERROR,
     }
     return row
-
-
-_PARTS = ("statistical", "calibration", "tracker")
 
 
 def verdict(row: dict[str, Any]) -> str:

@@ -38,7 +38,7 @@ def videos(results: dict) -> dict[str, tuple[float, float, float, float]]:
     bound, u from the field's rms the benchmark ran with."""
     rows = {f"{r['family']}_{i}": r for i, r in enumerate(results["video"]["rows"])}
     rows |= {r["case"]: r for r in results["unseen"]["rows"]}
-    rows |= {name: r for name, r in raycast_rows(results).items()}
+    rows |= raycast_rows(results)
     out = {}
     for name, r in rows.items():
         if not r["tracked"] or r.get("at_bound", True) or "tracker_error" not in r:
@@ -51,12 +51,12 @@ def videos(results: dict) -> dict[str, tuple[float, float, float, float]]:
 
 
 def raycast_rows(results: dict) -> dict[str, dict]:
-    """The ray caster's scenes (``benchmarks/raycast.py``) fitted, without seeds or with
-    them, in the rows' form of the other two benchmarks."""
+    """The ray caster's scenes (``benchmarks/raycast.py``) tracked and fitted, without seeds
+    or with them, right or wrong, in the rows' form of the other two benchmarks."""
     out = {}
     for r in results.get("raycast", {}).get("rows", []):
-        run = r if r.get("verdict") == "right" else r.get("seeded") or {}
-        if run.get("verdict") == "right" and "tracker_error" in run:
+        run = r if r.get("fit_exit") == 0 else r.get("seeded") or {}
+        if run.get("fit_exit") == 0 and run.get("mu0") is not None and "tracker_error" in run:
             out[r["scene"]] = run | {"tracked": True, "fitted": run["mu0"],
                                      "coefficient": run["mu0_true"]}  # fmt: skip
     return out

@@ -165,6 +165,9 @@ def test_the_tracker_s_error_is_tested_on_each_renderer_sized_on_the_others() ->
     assert got["tested_on_c"]["videos_tested"] == 300
     assert got["tested_on_c"]["coverage_2se"] < 0.85
     assert got["tested_on_a"]["coverage_2se"] > 0.97
+    own = module.by_renderer(data, renderer)
+    assert own["c"]["sigma_ml"] == pytest.approx(0.004, rel=0.2)
+    assert own["a"]["sigma_upper_90"] < own["c"]["sigma_ml"]
 
 
 def test_the_video_benchmark_compares_positions_at_the_film_s_times() -> None:

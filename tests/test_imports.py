@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from turntable._imports import code_of, import_graph, module_names
+from turntable._imports import PACKAGE, code_of, import_graph, module_names
 
 MAX_LINES = 500
 
@@ -117,6 +117,55 @@ def test_code_of_a_module_holds_every_module_its_import_loads() -> None:
         if set(loaded) - static:
             missing[name] = sorted(set(loaded) - static)
     assert len(names) > 50
+    assert missing == {}
+
+
+# Each script's imports alone, its folder first on sys.path: the package's modules loaded.
+_SCRIPT_LOADED = """
+import ast, json, sys
+from pathlib import Path
+out = {}
+for script in json.loads(sys.argv[1]):
+    home = str(Path(script).parent)
+    for m in list(sys.modules):
+        f = getattr(sys.modules[m], "__file__", None) or ""
+        if m.split(".")[0] == "turntable" or f.startswith(home):
+            del sys.modules[m]
+    sys.path.insert(0, home)
+    tree = ast.parse(Path(script).read_text())
+    body = [n for n in tree.body if isinstance(n, (ast.Import, ast.ImportFrom))]
+    exec(compile(ast.Module(body=body, type_ignores=[]), script, "exec"), {})
+    sys.path.remove(home)
+    out[script] = sorted(m for m in sys.modules if m.split(".")[0] == "turntable")
+print(json.dumps(out))
+"""
+
+
+def test_code_of_a_script_holds_every_module_its_imports_load() -> None:
+    """The scripts of the workflow's jobs, and the modules beside them that they import
+    (``_style``, ``report_figure``), against what `code_of` reads from their source."""
+    root = PACKAGE.parents[1]
+    scripts = sorted(
+        str(p)
+        for folder in ("scripts", "workflow/scripts")
+        for p in (root / folder).glob("*.py")
+        if not p.name.startswith("_")
+    )
+    out = subprocess.run(
+        [sys.executable, "-c", _SCRIPT_LOADED, json.dumps(scripts)],
+        capture_output=True,
+        text=True,
+        check=True,
+        cwd=root,
+    )
+    files = {path: name for name, path in module_names().items()}
+    missing = {}
+    for script, loaded in json.loads(out.stdout).items():
+        static = {files[p] for p in code_of(Path(script)) if p in files}
+        if set(loaded) - static:
+            missing[Path(script).name] = sorted(set(loaded) - static)
+    assert len(scripts) > 10
+    assert "turntable._atomic" in json.loads(out.stdout)[str(root / "scripts/fig1_schematic.py")]
     assert missing == {}
 
 

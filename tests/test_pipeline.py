@@ -144,11 +144,7 @@ def _edit_campaign(copy: Path, old: str, new: str) -> None:
 
 
 EDITS = {
-    # The physics runs in every job but the schematic's, which draws without the package.
-    "the physics": (
-        lambda c: _append(c / "src/turntable/spectrum.py"),
-        "everything but fig1_schematic",
-    ),
+    "the physics": (lambda c: _append(c / "src/turntable/spectrum.py"), "everything"),
     # The tracker runs in the jobs of `turntable` and `python -m turntable.campaign` (it
     # fits videos), then in what reads their outputs; not in the physics' figures and claims.
     "the tracker": (
@@ -188,27 +184,12 @@ EDITS = {
 }
 
 
-# In the default run: the physics (every job but one), the tracker, a parameter (one figure
-# and what reads it), a row of the campaign (its batch); the other edits run with -m slow
-# (CI), each a dry run of the whole workflow.
-SLOW_EDITS = {
-    "editor files in the package",
-    "a script",
-    "the style",
-    "a caption",
-    "a label of the campaign",
-    "the same values in another order",
-}
-
-
-@pytest.mark.parametrize(
-    "what", [pytest.param(w, marks=[pytest.mark.slow] * (w in SLOW_EDITS)) for w in EDITS]
-)
+@pytest.mark.parametrize("what", EDITS)
 def test_a_change_reruns_exactly_the_jobs_it_touches(copy: Path, what: str) -> None:
     edit, expected = EDITS[what]
     edit(copy)
-    if expected == "everything but fig1_schematic":
-        expected = set(plan(copy, "--forceall")) - {"fig1_schematic"}
+    if expected == "everything":
+        expected = set(plan(copy, "--forceall"))
         assert len(expected) >= 20
     assert (plan(copy) if isinstance(expected, dict) else set(plan(copy))) == expected
 

@@ -4,8 +4,10 @@ Every file is parsed with `ast`; nothing is imported. Imports at the top and ins
 count, relative ones resolved. Importing a submodule runs the packages above it first. A
 package that imports its submodules by name (``importlib.import_module``) runs them all. A
 data file (a template, a schema, a table) is read by the modules whose strings name it or
-its folder. The workflow takes a job's code from here (`code_of`), so an edit reruns the jobs
-whose code runs the edited file, and no other.
+its folder (a module with the string ``"data"`` has the folder ``data``'s files: one input
+too many at worst, never one too few). A script's imports of the modules and packages
+beside it are followed. The workflow takes a job's code from here (`code_of`): an edit
+reruns every job whose code runs the edited file.
 """
 
 from __future__ import annotations
@@ -107,6 +109,29 @@ def _data_files(root: Path, modules: dict[str, Path]) -> dict[str, list[Path]]:
     return out
 
 
+def _imported_by_script(script: Path) -> set[str]:
+    """Dotted names that `script` imports, and those that the modules and packages beside
+    it (in its folder, the first of its ``sys.path``) that it imports import in turn."""
+    home, names, todo, seen = script.parent, set(), [script], set()
+    while todo:
+        path = todo.pop()
+        if path in seen:
+            continue
+        seen.add(path)
+        parts = path.relative_to(home).with_suffix("").parts
+        name = ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+        found = set(
+            imported(_tree(path), name if parts[-1] == "__init__" else name.rpartition(".")[0])
+        )
+        names |= found
+        for dotted in found:
+            prefix = dotted.split(".")
+            for i in range(1, len(prefix) + 1):
+                base = home.joinpath(*prefix[:i])
+                todo += [f for f in (base.with_suffix(".py"), base / "__init__.py") if f.is_file()]
+    return names
+
+
 @functools.cache
 def _index(root: Path) -> tuple[dict[str, Path], dict[str, set[str]], dict[str, list[Path]]]:
     modules = module_names(root)
@@ -117,23 +142,12 @@ def code_of(*entries: str | Path, root: Path = PACKAGE) -> list[Path]:
     """The package's files that running `entries` runs or reads, sorted.
 
     An entry is a module's dotted name (``turntable.cli``) or the path of a script outside
-    the package; a script's imports of modules beside it are followed as well.
+    the package; a script's imports of the modules and packages beside it are followed.
     """
     modules, graph, data = _index(root)
     start: set[str] = set()
-    scripts = [Path(e) for e in entries if isinstance(e, Path) or e.endswith(".py")]
-    seen: set[Path] = set()
-    while scripts:
-        script = scripts.pop()
-        if script in seen:
-            continue
-        seen.add(script)
-        names = set(imported(_tree(script)))
-        start |= _targets(names, modules)
-        for name in names:
-            beside = script.parent / f"{name.split('.')[0]}.py"
-            if beside.is_file():
-                scripts.append(beside)
+    for script in (Path(e) for e in entries if isinstance(e, Path) or e.endswith(".py")):
+        start |= _targets(_imported_by_script(script), modules)
     start |= _targets([e for e in entries if isinstance(e, str) and not e.endswith(".py")], modules)
     run, todo = set(), list(start)
     while todo:

@@ -24,7 +24,7 @@ rule claims:
 rule claims_table:
     input:
         "results/claims.json",
-        code=code_of(ROOT / "workflow/scripts/claims_table.py"),
+        code=code_inputs(ROOT / "workflow/scripts/claims_table.py"),
     output:
         ensure(
             report(

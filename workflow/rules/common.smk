@@ -56,20 +56,20 @@ FIGURES = yaml.safe_load(Path(workflow.basedir, "figures.yaml").read_text())
 STYLE = ["scripts/_style/__init__.py", "scripts/_style/turntable.mplstyle"]
 
 
-def code_of(*entries):
+def code_inputs(*entries):
     """The package's files that the entries run (turntable._imports.code_of), as inputs."""
     return [str(p.relative_to(ROOT)) for p in turntable._imports.code_of(*entries)]
 
 
 # `turntable ...` and `python -m turntable.campaign ...`: the code of a shell command's job.
-CLI = code_of("turntable.cli")
-CAMPAIGN_CODE = code_of("turntable.campaign")
+CLI = code_inputs("turntable.cli")
+CAMPAIGN_CODE = code_inputs("turntable.campaign")
 
 
 def script_inputs(name, style=()):
     """Inputs of the job that runs scripts/<name>.py: the script and the code it runs."""
     script = f"scripts/{name}.py"
-    return {"script": script, "code": [*code_of(ROOT / script), *style]}
+    return {"script": script, "code": [*code_inputs(ROOT / script), *style]}
 
 
 def moved_outputs(job, folder):

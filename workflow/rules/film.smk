@@ -74,7 +74,7 @@ rule film_page:
             "workflow/report/{name}.rst", name=["fig8_measurability", "fig9_fit"]
         ),
         code=[
-            *code_of(ROOT / "workflow/scripts/film_page.py"),
+            *code_inputs(ROOT / "workflow/scripts/film_page.py"),
             "workflow/scripts/report_figure.py",
             "workflow/templates/figure.html.j2",
         ],

@@ -12,7 +12,7 @@ rule figure_gallery:
         animation="figures/animation.gif",
         animation_caption="workflow/report/animation.rst",
         code=[
-            *code_of(ROOT / "workflow/scripts/figure_gallery.py"),
+            *code_inputs(ROOT / "workflow/scripts/figure_gallery.py"),
             "workflow/scripts/report_figure.py",
             "workflow/templates/figure.html.j2",
             "workflow/templates/figures.html.j2",

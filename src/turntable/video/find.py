@@ -8,7 +8,8 @@ camera that the rim alone gives.  What tells them apart is how they move:
 
 - the **mark** turns rigidly with the platter: on a circle about the axis, at least
   ``MARK_MIN_RADIUS`` of P from it, at a constant rate that a platter can have (``RATE_RANGE``,
-  or within 5 % of ``--rpm``); of several, the one nearest the rim (`turntable.video.marks`);
+  or within 5 % of ``--rpm``); of several, the one nearest the rim of those that stand out
+  from the platter nearly as much as the one that stands out most (`turntable.video.marks`);
 - the **ball** does not; it is round and of the size that R and the rim's scale predict; of
   several, the one that differs most from the platter (not its shadow).
 
@@ -31,8 +32,8 @@ from turntable.video.camera import Pose
 from turntable.video.colours import Colour
 from turntable.video.decode import Picture, VideoError, lab, window
 from turntable.video.marks import (
-    MARK_MIN_RADIUS,
     RATE_RANGE,
+    in_order,
     seeded_mark,
     turning,
     turning_with_the_platter,
@@ -203,10 +204,7 @@ def find(
         m = seeded["--mark-at"]
         marks = [seeded_mark(m, dict(marks).get(m), candidates, t0, seen, pose, tolerance, rpm)]
     else:
-        marks = sorted(
-            ((i, w) for i, w in marks if candidates[i].turns_at >= MARK_MIN_RADIUS),
-            key=lambda iw: -candidates[iw[0]].turns_at,
-        )
+        marks = in_order(marks, candidates)
     if not marks:
         raise VideoError(
             "no mark found on the platter: nothing near the rim turns with it at a rate a "

@@ -8,7 +8,8 @@ camera that the rim alone gives.  What tells them apart is how they move:
 
 - the **mark** turns rigidly with the platter: on a circle about the axis, at least
   ``MARK_MIN_RADIUS`` of P from it, at a constant rate that a platter can have (``RATE_RANGE``,
-  or within 5 % of ``--rpm``); of several, the one nearest the rim;
+  or within 5 % of ``--rpm``); of several, the one nearest the rim of those that stand out
+  from the platter nearly as much as the one that stands out most (`turntable.video.marks`);
 - the **ball** does not; it is round and of the size that R and the rim's scale predict; of
   several, the one that differs most from the platter (not its shadow).
 
@@ -30,6 +31,13 @@ from turntable.video import camera
 from turntable.video.camera import Pose
 from turntable.video.colours import Colour
 from turntable.video.decode import Picture, VideoError, lab, window
+from turntable.video.marks import (
+    RATE_RANGE,
+    in_order,
+    seeded_mark,
+    turning,
+    turning_with_the_platter,
+)
 from turntable.video.platter import Platter
 from turntable.video.regions import MIN_CONTRAST, Candidate, _candidate, _parts, _seeded, _split
 
@@ -38,10 +46,6 @@ from turntable.video.regions import MIN_CONTRAST, Candidate, _candidate, _parts,
 CONTRAST_NOISE = 5.0
 #: Candidates are followed over this long (s), at least `PROBE_FRAMES` frames.
 PROBE_SECONDS, PROBE_FRAMES = 0.3, 10
-#: A mark is at least this far from the axis, in units of P.
-MARK_MIN_RADIUS = 0.45
-#: Rates a platter can turn at, rad/s (3 to 115 rpm).
-RATE_RANGE = (0.3, 12.0)
 #: The ball's image area within these factors of a ball of radius R's, its axis ratio below
 #: `MAX_ELONGATION`.
 AREA_RANGE, MAX_ELONGATION = (0.35, 2.8), 2.0
@@ -72,9 +76,6 @@ CRESCENT_HINT = (
 )
 #: A seed's region is looked for within this many times the radius of a ball's image there.
 SEED_REACH = 4.0
-#: Rates of a mark seen in two probe frames agree within this share (a mark seeded where it
-#: does not stand out: `_turning_through`).
-SEED_RATE_AGREE = 0.15
 #: Candidates lie this far (px) inside the rim: not the platter's side, nor its shadow beyond
 #: a rim fitted a pixel too wide.
 RIM_MARGIN_PX = 3.0
@@ -88,11 +89,8 @@ PROBE_AREA, GATE_PX, GATE_RADII = (0.3, 3.3), 3.0, 1.5
 #: A candidate followed over this share of the probe's frames (and 3 at least) has a path.
 MIN_FOLLOWED = 0.6
 #: A path turns rigidly where its rms distance from a uniform turning is below ``RIGID_R`` R,
-#: or ``RIGID_PX`` px of the rim's scale, if more; and at least ``OFF_AXIS`` P from the axis
-#: (a label at the centre turns, but tells nothing of the rate).
-RIGID_R, RIGID_PX, OFF_AXIS = 0.15, 1.5, 0.05
-#: A mark's rate within this share of ``--rpm``.
-RPM_AGREE = 0.05
+#: or ``RIGID_PX`` px of the rim's scale, if more.
+RIGID_R, RIGID_PX = 0.15, 1.5
 #: A second candidate for the ball this close in contrast and area to the first makes the
 #: choice ambiguous.
 RIVAL_CONTRAST, RIVAL_AREA = 0.8, 0.6
@@ -201,15 +199,12 @@ def find(
     candidates = [p.c for p in paths]
     tolerance = max(RIGID_R * ball_radius, RIGID_PX * platter_radius / platter.rim.a)
     # 4. the marks: what turns rigidly with the platter, the one seeded or those near the rim
-    marks = _turning_with_the_platter(planes, candidates, tolerance, platter_radius, rpm)
+    marks = turning_with_the_platter(planes, candidates, tolerance, platter_radius, rpm)
     if mark_at is not None:
         m = seeded["--mark-at"]
-        marks = [_seeded_mark(m, dict(marks).get(m), candidates, t0, seen, pose, tolerance, rpm)]
+        marks = [seeded_mark(m, dict(marks).get(m), candidates, t0, seen, pose, tolerance, rpm)]
     else:
-        marks = sorted(
-            ((i, w) for i, w in marks if candidates[i].turns_at >= MARK_MIN_RADIUS),
-            key=lambda iw: -candidates[iw[0]].turns_at,
-        )
+        marks = in_order(marks, candidates)
     if not marks:
         raise VideoError(
             "no mark found on the platter: nothing near the rim turns with it at a rate a "
@@ -327,35 +322,6 @@ def _follow_probe(paths: list[_Path], probe, look: _Look) -> list:
     return seen
 
 
-def _turning_with_the_platter(planes, candidates, tolerance, platter_radius, rpm):
-    """The candidates whose paths turn rigidly about the axis, at a rate a platter can have
-    (within `RPM_AGREE` of ``--rpm``), off the axis: [(index, rate)]; each one's distance
-    from the axis set in ``candidates`` (``turns_at``)."""
-    marks = []
-    for i, plane in enumerate(planes):
-        if plane is None:
-            continue
-        rate, centre, residual = _turning(*plane)
-        ok = RATE_RANGE[0] <= abs(rate) <= RATE_RANGE[1]
-        if rpm is not None:
-            ok = abs(abs(rate) / (rpm * math.pi / 30) - 1) < RPM_AGREE
-        if residual < tolerance and ok and abs(centre) > OFF_AXIS * platter_radius:
-            candidates[i] = candidates[i]._replace(turns_at=abs(centre) / platter_radius)
-            marks.append((i, rate))
-    return marks
-
-
-def _seeded_mark(m, rate, candidates, t0, seen, pose, tolerance, rpm):
-    """The seeded mark and its rate: its own if it turns, else that of what turns out of it
-    (`_turning_through`, its area then set in ``candidates``), else None."""
-    if rate is None:
-        turning = _turning_through(candidates[m], t0, seen, pose, tolerance, rpm)
-        if turning is not None:
-            rate = turning[0]
-            candidates[m] = candidates[m]._replace(area=turning[1])
-    return m, rate
-
-
 def _ball_and_its_mark(marks, planes, candidates, ball, pose, ball_radius, tolerance):
     """The first of the ``marks`` (index, rate) with a ball, and the ball (``ball`` if
     seeded): of the candidates that do not turn rigidly at its rate, those followed over the
@@ -363,7 +329,7 @@ def _ball_and_its_mark(marks, planes, candidates, ball, pose, ball_radius, toler
     m, rate, seeded = None, None, ball
     for n, (m, rate) in enumerate(marks):
         rigid = [
-            rate is not None and planes[i] is not None and _turning(*planes[i], rate)[2] < tolerance
+            rate is not None and planes[i] is not None and turning(*planes[i], rate)[2] < tolerance
             for i in range(len(candidates))
         ]
         others = [c if i != m and not rigid[i] else None for i, c in enumerate(candidates)]
@@ -427,45 +393,6 @@ def _on_plane(p: _Path, frames: int, pose: Pose) -> tuple[NDArray, NDArray] | No
         return None
     q = camera.back_project(pose, np.array(p.uv))
     return np.array(p.t[: len(p.uv)]), q[:, 0] + 1j * q[:, 1]
-
-
-def _turning(t: NDArray, z: NDArray, rate: float | None = None) -> tuple[float, complex, float]:
-    """The uniform turning about the axis nearest a path: its rate (fitted unless given), the
-    position at t = 0 and the rms distance of the path from it."""
-    if rate is None:
-        rate = float(np.polyfit(t, np.unwrap(np.angle(z)), 1)[0])
-    c = complex(np.mean(z * np.exp(-1j * rate * t)))
-    return rate, c, float(np.sqrt(np.mean(np.abs(z - c * np.exp(1j * rate * t)) ** 2)))
-
-
-def _turning_through(c: Candidate, t0: float, seen, pose: Pose, tolerance: float, rpm):
-    """What turns out of a seeded region that does not itself turn (a mark seeded inside a
-    lamp's bright spot, which stays where it is): the rate of a platter (rad/s) that the
-    most probe frames agree on (within `SEED_RATE_AGREE`), from the blobs of no more than
-    the region's size at the seed's distance from the axis, and their median area; None if
-    fewer than half of the frames agree.  ``seen`` holds, for each frame after the first,
-    its time, the blobs' centres (n, 2) and their areas."""
-    z0 = complex(*camera.back_project(pose, np.array([[c.u, c.v]]))[0])
-    rates, sizes, frames = [], [], []
-    for k, (t, cen, areas) in enumerate(seen):
-        small = areas <= 1.5 * c.area
-        q = camera.back_project(pose, cen[small]).reshape(-1, 2)
-        z = q[:, 0] + 1j * q[:, 1]
-        near = np.abs(np.abs(z) - abs(z0)) < 2 * tolerance
-        rates += list(np.angle(z[near] / z0) / (t - t0))
-        sizes += list(areas[small][near])
-        frames += [k] * int(near.sum())
-    given = None if rpm is None else rpm * math.pi / 30
-    low, high = RATE_RANGE if given is None else ((1 - RPM_AGREE) * given, (1 + RPM_AGREE) * given)
-    best, agree = None, []
-    for w in rates:
-        if low <= abs(w) <= high:
-            near_w = [i for i, x in enumerate(rates) if abs(x / w - 1) < SEED_RATE_AGREE]
-            if len({frames[i] for i in near_w}) > len({frames[i] for i in agree}):
-                best, agree = w, near_w
-    if len({frames[i] for i in agree}) < len(seen) / 2:
-        return None
-    return best, float(np.median([sizes[i] for i in agree]))
 
 
 def _area_at(pose: Pose, uv: tuple[float, float], ball_radius: float) -> float:

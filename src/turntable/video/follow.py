@@ -19,13 +19,14 @@ import numpy as np
 from numpy.typing import NDArray
 
 from turntable.video import camera
-from turntable.video.blobs import THRESHOLD, Blob, blobs, merged_ball
+from turntable.video.blobs import Blob, blobs, merged_ball
 from turntable.video.camera import Pose
 from turntable.video.colours import Colour, Colours
 from turntable.video.decode import Picture, VideoError, lab, rgb, window
 from turntable.video.find import RIM_MARGIN_PX, Candidate, Found
 from turntable.video.platter import Ellipse, Platter, rim_points_again
 from turntable.video.seeds import Seed, end_before
+from turntable.video.two_colours import ball_colours
 
 #: Rim points are collected on this many frames, spread over the video (every
 #: ``RIM_EVERY`` frames where the video does not say how many it has).
@@ -57,13 +58,6 @@ EDGE_RADII, EDGE_PX = 1.5, 2.0
 #: not in a gap: where it is is no longer predicted well enough to take the next blob of its
 #: colour for it.  A seed in a later frame (`turntable.video.seeds`) follows it from there.
 MAX_GAP_S, MAX_GAP_FRAMES = 0.5, 10
-#: A ball of two colours (white with red squares): where at least ``SECOND_SHARE`` of the
-#: disc within ``SECOND_INNER`` of its radius on the first frame (its shaded limb left out) is
-#: not of the ball's colour but differs from the platter by at least ``SECOND_CONTRAST`` of the
-#: ball's colour's distance from it, the ball is followed by both colours: by its colour
-#: alone, its blob was one of its squares, its centre off by up to 0.15 R, and lost where the
-#: squares turned away.  A highlight or a shaded side covers less of the disc.
-SECOND_SHARE, SECOND_INNER, SECOND_CONTRAST = 0.25, 0.7, 0.5
 #: The mark's turn from where it was last seen within these factors of the platter's (the
 #: image's angles about the rim's centre are the plane's within a factor 1 / cos(tilt)), where
 #: the platter turns by at least `TURN_SEEN` (rad) in between.
@@ -342,24 +336,6 @@ class _Sizes(NamedTuple):
 
     ball: float
     mark: float
-
-
-def ball_colours(picture: Picture, found: Found) -> Colour | Colours:
-    """The colours the ball is followed by: its own, and a second where the first frame shows
-    one on it (`SECOND_SHARE`)."""
-    colour, ball = found.ball_colour, found.ball
-    r = SECOND_INNER * math.sqrt(ball.area / math.pi)
-    box = window((ball.u, ball.v), r, picture.shape)
-    pix = lab(picture, box)
-    vv, uu = np.mgrid[box[0], box[1]]
-    pix = pix[np.hypot(uu - ball.u, vv - ball.v) < r]
-    far = SECOND_CONTRAST * np.linalg.norm(colour.target - colour.platter)
-    other = (colour.share(pix) < THRESHOLD) & (
-        np.linalg.norm(pix - colour.platter.astype(np.float32), axis=-1) > far
-    )
-    if not len(pix) or other.mean() < SECOND_SHARE:
-        return colour
-    return Colours((colour, Colour(np.median(pix[other], axis=0).astype(float), colour.platter)))
 
 
 def _ball_blob(

@@ -45,6 +45,12 @@ MARK_AREA, MARK_AREA_FIRST = (0.25, 4.0), (0.2, 5.0)
 #: The mark's window reaches ``MARK_WINDOW`` of its radii and `WINDOW_PX` px about where it
 #: is predicted, and its step (2 px more) for each frame since it was found.
 MARK_WINDOW = 3.0
+#: A blob of more than this many times the area of the ball's circle whose outline is not
+#: found (its centre its centroid) may be the ball run into something of a like share (a
+#: cream ring on a label beside a white ball: 1.7, its centroid 1.4 R off the ball): the
+#: ball is looked for by its outline about where it is predicted first (`merged_ball`).
+#: A ball's own blob covers 0.85-1.05 of its circle.
+ALONE_AREA = 1.3
 #: A blob is taken for the nearest to the prediction, its distance (px) and this many times
 #: its area's log-ratio to the expected one added.
 AREA_WEIGHT = 3.0
@@ -358,6 +364,8 @@ def _ball_blob(
     )
     if got is None:
         got = merged_ball(picture, box, colour, near, radius)
+    elif not got.outlined and got.area > ALONE_AREA * math.pi * radius**2:
+        got = merged_ball(picture, box, colour, near, radius) or got
     return got
 
 

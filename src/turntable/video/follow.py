@@ -49,7 +49,7 @@ MARK_WINDOW = 3.0
 #: found (its centre its centroid) may be the ball run into something of a like share (a
 #: cream ring on a label beside a white ball: 1.7, its centroid 1.4 R off the ball): the
 #: ball is looked for by its outline about where it is predicted first (`merged_ball`).
-#: A ball's own blob covers 0.85-1.05 of its circle.
+#: A ball's own blob covers 0.85-1.06 of its circle on S13's frames.
 ALONE_AREA = 1.3
 #: A blob is taken for the nearest to the prediction, its distance (px) and this many times
 #: its area's log-ratio to the expected one added.

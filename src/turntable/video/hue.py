@@ -39,8 +39,9 @@ OTHER_PX, OTHER_CONTRAST, OTHER_RAYS = (1.5, 2.25, 3.0), 0.5, 4
 #: A ray crosses the ball's outline into something of another colour where the colours just
 #: inside and just outside its circle differ by this much (CIELAB), and the one outside
 #: differs as much from each of the ball's colours: a cream ring on a label touching a white
-#: ball (14-21; the ball's share, in lightness, rises into it from the ball's shaded edge).  A
-#: shadow as dark as the ball, or the ball beyond a shadow's circle, differs less.
+#: ball (11-21 on S13's frames; the ball's share, in lightness, rises into it from the ball's
+#: shaded edge).  A shadow as dark as the ball, or the ball beyond a shadow's circle, differs
+#: less.
 BORDER_CONTRAST = 10.0
 
 

@@ -213,7 +213,9 @@ def merged_ball(
     if share[int(start[1]), int(start[0])] < THRESHOLD:
         return None
     edge = colour.edge_share(lab_img, share)
-    seen = (lab_img, colour.targets)  # a ring of a like share touching it is another colour
+    # a ring of a like share touching a ball of one colour is of another; a ball of two, shaded,
+    # is of neither of its own (a two-tone ball: 0.037 -> 0.041 R with them)
+    seen = (lab_img, colour.targets) if isinstance(colour, Colour) else None
     centre = _outline(edge, start, radius, None, 48, MERGED_POINTS, (lab_img, colour), seen)[0]
     if centre is None:
         edge = _told_from_around(lab_img, share, edge, colour, start, radius)

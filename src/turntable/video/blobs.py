@@ -108,7 +108,8 @@ class Blob(NamedTuple):
     outside the allowed region or the window's cut by the image's edge; whether it runs out
     of the window (its area and centre are then not its own); the radius (px) of the ball's
     part, lit or shaded, in the circle through its outline where that circle is confirmed
-    all round (`turntable.video.limb.disc_radius`), else nan."""
+    all round (`turntable.video.limb.disc_radius`), else nan; whether its centre is that of a
+    circle through its outline (not its centroid, the outline not found)."""
 
     u: float
     v: float
@@ -116,6 +117,7 @@ class Blob(NamedTuple):
     touches: bool
     cut: bool = False
     disc: float = math.nan
+    outlined: bool = False
 
 
 def blobs(
@@ -169,17 +171,19 @@ def blobs(
             or (y + h + v0 >= height)
         )
         centre = np.array([(wt * uu).sum(), (wt * vv).sum()]) / total
-        disc = math.nan
+        disc, outlined = math.nan, False
         if outline and ROUND_AREA[0] < total / (math.pi * outline**2) < ROUND_AREA[1]:
             edge = colour.edge_share(lab_img, share)
-            centre, arc = _outline(edge, centre, outline, centre, local=(lab_img, colour))
-            centre = ring.edge_centre(edge, centre, outline, centre)
+            found, arc = _outline(edge, centre, outline, centre, local=(lab_img, colour))
+            outlined = found is not centre
+            centre = ring.edge_centre(edge, found, outline, found)
             if arc:  # its shadow left out: the blob's weight within the ball's circle
                 total = float(wt[np.hypot(uu - centre[0], vv - centre[1]) < outline + ARC_PX].sum())
             if _round(edge, centre, outline, 48, limb=True):
                 disc = limb_module.disc_radius(edge, centre, outline, threshold)
         cut = x == 0 or y == 0 or x + w >= mask.shape[1] or y + h >= mask.shape[0]
-        out.append(Blob(float(centre[0]) + u0, float(centre[1]) + v0, total, touches, cut, disc))
+        u, v = float(centre[0]) + u0, float(centre[1]) + v0
+        out.append(Blob(u, v, total, touches, cut, disc, outlined))
     return out
 
 
@@ -192,13 +196,12 @@ def merged_ball(
 ) -> Blob | None:
     """A ball whose blob runs into something of a like colour (a label it crosses): its
     centre from the outline about ``near`` where half of the rays find it (the half that
-    borders the platter, at least, when the ball lies on the label's edge), within R / 4 of
-    ``near``; None if not (a label of the ball's own colour hides more than that).  Where the
-    share does not tell the ball from what it runs into (a red label under an orange ball on a
-    grey platter: both far along the line from the grey to the orange), the outline is looked
-    for again with the ball's colour told from that thing's (`_told_from_around`), and then,
-    on the rays that end on it, by chromaticity (a red ball by a salmon label, its shaded limb
-    and its shadow on the label alike in CIELAB: ``turntable.video.chroma``)."""
+    borders the platter, at least), within R / 4 of ``near``; None if not.  The rays that end
+    on another hue are looked at again (`_on_other_hue`), and a ray into another colour
+    confirms the circle through an arc (a cream ring touching a white ball: `_round`).  Where
+    the share does not tell the ball from what it runs into (a red label under an orange
+    ball), the ball's colour is told from that thing's (`_told_from_around`), and then, on the
+    rays that end on it, by chromaticity (a red ball by a salmon label: `video.chroma`)."""
     lab_img = lab(picture, box)
     start = np.array([near[0] - box[1].start, near[1] - box[0].start])
     h, w = lab_img.shape[:2]
@@ -208,7 +211,10 @@ def merged_ball(
     if share[int(start[1]), int(start[0])] < THRESHOLD:
         return None
     edge = colour.edge_share(lab_img, share)
-    centre = outline_centre(edge, start, radius, None, min_points=MERGED_POINTS)
+    # a ring of a like share touching a ball of one colour is of another; a ball of two, shaded,
+    # is of neither of its own (a two-tone ball: 0.037 -> 0.041 R with them)
+    seen = (lab_img, colour.targets) if isinstance(colour, Colour) else None
+    centre = _outline(edge, start, radius, None, 48, MERGED_POINTS, (lab_img, colour), seen)[0]
     told = None
     if centre is None:
         told = _told_from_around(lab_img, share, edge, colour, start, radius)
@@ -221,7 +227,7 @@ def merged_ball(
     if centre is None or np.hypot(*(centre - start)) > MERGED_REACH * radius:
         return None
     return Blob(float(centre[0]) + box[1].start, float(centre[1]) + box[0].start,
-                math.pi * radius**2, False)  # fmt: skip
+                math.pi * radius**2, False, outlined=True)  # fmt: skip
 
 
 def _told_from_around(lab_img, share, edge, colour, start, radius: float):
@@ -278,12 +284,13 @@ def outline_centre(
 
 
 def _outline(
-    share, start, radius: float, fallback, rays: int = 48, min_points: int = 12, local=None
+    share, start, radius: float, fallback, rays=48, min_points=12, local=None, colours=None
 ):
     """`outline_centre`, and whether the centre is that of the arc bordering the platter.
     With ``local`` (the window's CIELAB colours and the `Colour`), the rays that end on
-    something of another hue are looked at again (`_on_other_hue`)."""
-    got = _outline_plain(share, start, radius, fallback, rays, min_points)
+    something of another hue are looked at again (`_on_other_hue`); with ``colours`` (those
+    and the ball's colours), a ray into something of another colour confirms an arc (`_round`)."""
+    got = _outline_plain(share, start, radius, fallback, rays, min_points, colours)
     if local is None or got[0] is None or got[0] is fallback:
         return got
     profiles = _on_other_hue(share, *local, got[0], radius, rays)
@@ -294,14 +301,14 @@ def _outline(
     return got if again is None or again[1] != got[1] else again
 
 
-def _outline_plain(share, start, radius: float, fallback, rays: int, min_points: int):
+def _outline_plain(share, start, radius: float, fallback, rays: int, min_points: int, colours):
     """`_outline` without ``local``."""
     arc_min = ARC_FIRST if radius >= ARC_MIN_PX else math.inf
     got = _outline_fit(share, start, radius, fallback, rays, min_points, arc_min)
     if got is None or not got[1]:
         return (None, False) if got is None else got
     got = _outline_fit(share, got[0], radius, None, rays, min_points, ARC_MIN)
-    if got is None or not _round(share, got[0], radius, rays, limb=True):
+    if got is None or not _round(share, got[0], radius, rays, limb=True, colours=colours):
         return fallback, False
     return got[0], True
 
@@ -438,11 +445,16 @@ def _fit_outline(pts, weight, start, radius: float, fallback, min_points: int, a
     return plain if centre is None else (centre, True)
 
 
-def _round(share, centre, radius: float, rays: int, limb: bool) -> bool:
+def _round(share, centre, radius: float, rays: int, limb: bool, colours=None) -> bool:
     """Whether the share falls outward across the circle on `ARC_EDGE` of the rays, or, with
-    ``limb``, crosses the ball's shaded limb (`turntable.video.limb.confirmed`)."""
+    ``limb``, crosses the ball's shaded limb (`turntable.video.limb.confirmed`), or, with
+    ``colours`` (CIELAB window, the ball's colours), crosses into something of another colour
+    (`turntable.video.hue.borders_another_colour`)."""
     prof = limb_module.across(share, centre, radius, rays, ARC_ACROSS)
-    return float(np.mean(limb_module.confirmed(prof, ARC_STEP, limb))) >= ARC_EDGE
+    ok = limb_module.confirmed(prof, ARC_STEP, limb)
+    if colours is not None:
+        ok |= hue.borders_another_colour(*colours, centre, radius, rays, ARC_ACROSS)
+    return float(np.mean(ok)) >= ARC_EDGE
 
 
 def _support(pts, weight, centre, radius: float) -> float:

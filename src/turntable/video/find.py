@@ -39,26 +39,27 @@ from turntable.video.marks import (
     turning_with_the_platter,
 )
 from turntable.video.platter import Platter
-from turntable.video.regions import MIN_CONTRAST, Candidate, _candidate, _parts, _seeded, _split
+from turntable.video.regions import (
+    AREA_RANGE,
+    MAX_ELONGATION,
+    MIN_CONTRAST,
+    MIN_FILL,
+    MIN_SOLIDITY,
+    Candidate,
+    _a_ball,
+    _area_at,
+    _ball_shaped,
+    _candidate,
+    _parts,
+    _seeded,
+    _split,
+)
 
 #: A candidate differs from the platter by this many times the platter's median distance
 #: from its own colour, and by at least ``MIN_CONTRAST`` (CIELAB units).
 CONTRAST_NOISE = 5.0
 #: Candidates are followed over this long (s), at least `PROBE_FRAMES` frames.
 PROBE_SECONDS, PROBE_FRAMES = 0.3, 10
-#: The ball's image area within these factors of a ball of radius R's, its axis ratio below
-#: `MAX_ELONGATION`.
-AREA_RANGE, MAX_ELONGATION = (0.35, 2.8), 2.0
-#: A ball's image is a disc (with its shadow, a bulge on it): its region, holes filled, covers
-#: at least this share of its convex hull.  A ball's shaded limb and its shadow alone, its lit
-#: side of the platter's colour, make a crescent that covers 0.5-0.75.
-MIN_SOLIDITY = 0.8
-#: A ball's region covers at least this share of its outline's inside: a highlight is a small
-#: hole in it (0.94-1.00 on the balls of the benchmark's scenes).  The thin ring of a label's
-#: edge, split from the label by colour, covers less than a tenth of the label; a steel ball
-#: on a light grey platter, its lit side of the platter's grey, leaves its shaded limb as a
-#: ring that covers 0.58 (a ball of nearly the platter's colour, which the guide rules out).
-MIN_FILL = 0.8
 #: A candidate not of a ball's shape (a black ball and its shadow on a light platter, cut as
 #: one region) is split by colour into this many clusters, each part a candidate too.
 RESPLIT_CLUSTERS = 2
@@ -271,13 +272,12 @@ def _first_candidates(look: _Look, lab0) -> list[Candidate]:
     return out
 
 
-def _ball_shaped(c: Candidate) -> bool:
-    """Round and whole as a ball's image is (`MAX_ELONGATION`, `MIN_SOLIDITY`, `MIN_FILL`)."""
-    return c.elongation < MAX_ELONGATION and c.solidity >= MIN_SOLIDITY and c.fill >= MIN_FILL
-
-
 def _at_seed(option, at, look: _Look, lab0, pose, ball_radius, paths) -> Candidate:
-    """The candidate at a seed; refused if nothing there differs from the platter."""
+    """The candidate at a seed; refused if nothing there differs from the platter.  A ball's
+    seed whose region runs into something of a like colour, not of a ball's size and shape (a
+    white ball touching a cream ring on a label: the ring's arc with it, its centroid 1.3 R
+    off), is the candidate of the first frame of a ball's size and shape that covers the
+    seed nearest, split from it by colour, if one does (`_a_ball`)."""
     reach = SEED_REACH * math.sqrt(_area_at(pose, at, ball_radius))
     c = _seeded(lab0, look.origin, look.platter, at, reach)
     if c is None:
@@ -286,6 +286,11 @@ def _at_seed(option, at, look: _Look, lab0, pose, ball_radius, paths) -> Candida
             "--plot shows the candidates",
             [p.c for p in paths],
         )
+    if option == "--ball-at" and not _a_ball(c, pose, ball_radius):
+        off = {id(p.c): math.hypot(p.c.u - at[0], p.c.v - at[1]) for p in paths}
+        balls = [p.c for p in paths if _a_ball(p.c, pose, ball_radius)]
+        covering = [b for b in balls if off[id(b)] < math.sqrt(b.area / math.pi)]
+        c = min(covering, key=lambda b: off[id(b)], default=c)
     return c
 
 
@@ -395,20 +400,9 @@ def _on_plane(p: _Path, frames: int, pose: Pose) -> tuple[NDArray, NDArray] | No
     return np.array(p.t[: len(p.uv)]), q[:, 0] + 1j * q[:, 1]
 
 
-def _area_at(pose: Pose, uv: tuple[float, float], ball_radius: float) -> float:
-    """Area (px^2) of the image of a ball of radius R seen at ``uv``."""
-    return math.pi * float(camera.image_radius(pose, [uv], ball_radius)[0]) ** 2
-
-
 def _choose_ball(others, pose, ball_radius) -> int | None:
     """The ball among the candidates that do not turn with the platter (None elsewhere)."""
-    ok = [
-        i
-        for i, c in enumerate(others)
-        if c is not None
-        and AREA_RANGE[0] < c.area / _area_at(pose, (c.u, c.v), ball_radius) < AREA_RANGE[1]
-        and _ball_shaped(c)
-    ]
+    ok = [i for i, c in enumerate(others) if c is not None and _a_ball(c, pose, ball_radius)]
     if not ok:
         return None
     ok.sort(key=lambda i: -others[i].contrast)

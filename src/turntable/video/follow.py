@@ -19,13 +19,14 @@ import numpy as np
 from numpy.typing import NDArray
 
 from turntable.video import camera
-from turntable.video.blobs import THRESHOLD, Blob, blobs, merged_ball
+from turntable.video.blobs import Blob, blobs, merged_ball
 from turntable.video.camera import Pose
 from turntable.video.colours import Colour, Colours
 from turntable.video.decode import Picture, VideoError, lab, rgb, window
 from turntable.video.find import RIM_MARGIN_PX, Candidate, Found
 from turntable.video.platter import Ellipse, Platter, rim_points_again
 from turntable.video.seeds import Seed, end_before
+from turntable.video.two_colours import ball_colours
 
 #: Rim points are collected on this many frames, spread over the video (every
 #: ``RIM_EVERY`` frames where the video does not say how many it has).
@@ -44,6 +45,12 @@ MARK_AREA, MARK_AREA_FIRST = (0.25, 4.0), (0.2, 5.0)
 #: The mark's window reaches ``MARK_WINDOW`` of its radii and `WINDOW_PX` px about where it
 #: is predicted, and its step (2 px more) for each frame since it was found.
 MARK_WINDOW = 3.0
+#: A blob of more than this many times the area of the ball's circle whose outline is not
+#: found (its centre its centroid) may be the ball run into something of a like share (a
+#: cream ring on a label beside a white ball: 1.7, its centroid 1.4 R off the ball): the
+#: ball is looked for by its outline about where it is predicted first (`merged_ball`).
+#: A ball's own blob covers 0.85-1.06 of its circle on S13's frames.
+ALONE_AREA = 1.3
 #: A blob is taken for the nearest to the prediction, its distance (px) and this many times
 #: its area's log-ratio to the expected one added.
 AREA_WEIGHT = 3.0
@@ -57,13 +64,6 @@ EDGE_RADII, EDGE_PX = 1.5, 2.0
 #: not in a gap: where it is is no longer predicted well enough to take the next blob of its
 #: colour for it.  A seed in a later frame (`turntable.video.seeds`) follows it from there.
 MAX_GAP_S, MAX_GAP_FRAMES = 0.5, 10
-#: A ball of two colours (white with red squares): where at least ``SECOND_SHARE`` of the
-#: disc within ``SECOND_INNER`` of its radius on the first frame (its shaded limb left out) is
-#: not of the ball's colour but differs from the platter by at least ``SECOND_CONTRAST`` of the
-#: ball's colour's distance from it, the ball is followed by both colours: by its colour
-#: alone, its blob was one of its squares, its centre off by up to 0.15 R, and lost where the
-#: squares turned away.  A highlight or a shaded side covers less of the disc.
-SECOND_SHARE, SECOND_INNER, SECOND_CONTRAST = 0.25, 0.7, 0.5
 #: The mark's turn from where it was last seen within these factors of the platter's (the
 #: image's angles about the rim's centre are the plane's within a factor 1 / cos(tilt)), where
 #: the platter turns by at least `TURN_SEEN` (rad) in between.
@@ -344,24 +344,6 @@ class _Sizes(NamedTuple):
     mark: float
 
 
-def ball_colours(picture: Picture, found: Found) -> Colour | Colours:
-    """The colours the ball is followed by: its own, and a second where the first frame shows
-    one on it (`SECOND_SHARE`)."""
-    colour, ball = found.ball_colour, found.ball
-    r = SECOND_INNER * math.sqrt(ball.area / math.pi)
-    box = window((ball.u, ball.v), r, picture.shape)
-    pix = lab(picture, box)
-    vv, uu = np.mgrid[box[0], box[1]]
-    pix = pix[np.hypot(uu - ball.u, vv - ball.v) < r]
-    far = SECOND_CONTRAST * np.linalg.norm(colour.target - colour.platter)
-    other = (colour.share(pix) < THRESHOLD) & (
-        np.linalg.norm(pix - colour.platter.astype(np.float32), axis=-1) > far
-    )
-    if not len(pix) or other.mean() < SECOND_SHARE:
-        return colour
-    return Colours((colour, Colour(np.median(pix[other], axis=0).astype(float), colour.platter)))
-
-
 def _ball_blob(
     picture, ball, found: Found, colour, allowed, pose, ball_radius, sizes: _Sizes, reach
 ):
@@ -382,6 +364,8 @@ def _ball_blob(
     )
     if got is None:
         got = merged_ball(picture, box, colour, near, radius)
+    elif not got.outlined and got.area > ALONE_AREA * math.pi * radius**2:
+        got = merged_ball(picture, box, colour, near, radius) or got
     return got
 
 

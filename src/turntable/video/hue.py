@@ -21,13 +21,28 @@ try:
 except ImportError:  # without the extra [video]
     cv2 = None
 
-__all__ = ["OTHER_CONTRAST", "OTHER_PX", "OTHER_RAYS", "mix_profiles", "other_hue"]
+__all__ = [
+    "BORDER_CONTRAST",
+    "OTHER_CONTRAST",
+    "OTHER_PX",
+    "OTHER_RAYS",
+    "borders_another_colour",
+    "mix_profiles",
+    "other_hue",
+]
 
 #: A ray ends on something of another hue where its colour ``OTHER_PX`` px beyond the circle
 #: (the median of these) lies off the line from the platter's colour to the ball's (the
 #: ``off_line`` of `other_hue`) and at least ``OTHER_CONTRAST`` of that line's length from
 #: the ball's colour; such rays are looked at again where ``OTHER_RAYS`` of them at least.
 OTHER_PX, OTHER_CONTRAST, OTHER_RAYS = (1.5, 2.25, 3.0), 0.5, 4
+#: A ray crosses the ball's outline into something of another colour where the colours just
+#: inside and just outside its circle differ by this much (CIELAB), and the one outside
+#: differs as much from each of the ball's colours: a cream ring on a label touching a white
+#: ball (11-21 on S13's frames; the ball's share, in lightness, rises into it from the ball's
+#: shaded edge).  A shadow as dark as the ball, or the ball beyond a shadow's circle, differs
+#: less.
+BORDER_CONTRAST = 10.0
 
 
 def _sample(lab_img: NDArray, start, angles: NDArray, at: NDArray) -> NDArray:
@@ -91,3 +106,36 @@ def mix_profiles(lab_img: NDArray, start, r: NDArray, angles: NDArray, bg, step)
         np.einsum("krc,kc->kr", along - bg[:, None], step)
         / np.einsum("kc,kc->k", step, step)[:, None]
     )
+
+
+def borders_another_colour(lab_img: NDArray, targets, centre, radius: float, rays: int,
+                           width: float) -> NDArray[np.bool_]:  # fmt: skip
+    """Which of ``rays`` rays from ``centre`` cross the circle of ``radius`` (px) from the
+    ball into something of another colour (`BORDER_CONTRAST`), its colours sampled ``width``
+    px inside and outside it.
+
+    Parameters
+    ----------
+    lab_img : numpy.ndarray
+        The window's CIELAB colours, float32 (h, w, 3).
+    targets : list of numpy.ndarray
+        The ball's colours (CIELAB).
+    centre : numpy.ndarray
+        The circle's centre (u, v), window px.
+    radius, width : float
+        The circle's radius and how far either side of it the colours are sampled, px.
+    rays : int
+        How many rays, evenly spread in angle.
+
+    Returns
+    -------
+    numpy.ndarray
+        One bool a ray.
+    """
+    angles = np.linspace(0.0, 2 * math.pi, rays, endpoint=False)
+    seen = _sample(lab_img, centre, angles, radius + np.array([-width, width], np.float32))
+    inside, outside = seen[:, 0], seen[:, 1]
+    other = np.linalg.norm(outside - inside, axis=-1) >= BORDER_CONTRAST
+    for target in targets:
+        other &= np.linalg.norm(outside - np.float32(target), axis=-1) >= BORDER_CONTRAST
+    return other

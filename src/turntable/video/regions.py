@@ -11,7 +11,9 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
+from turntable.video import camera
 from turntable.video.blobs import THRESHOLD
+from turntable.video.camera import Pose
 from turntable.video.colours import Colour
 from turntable.video.decode import window
 from turntable.video.platter import Platter
@@ -26,6 +28,19 @@ MIN_CONTRAST = 10.0
 #: At most this many components are candidates (the largest), each of at least
 #: ``MIN_AREA_PX`` px.
 MAX_PARTS, MIN_AREA_PX = 40, 3
+#: The ball's image area within these factors of a ball of radius R's, its axis ratio below
+#: `MAX_ELONGATION`.
+AREA_RANGE, MAX_ELONGATION = (0.35, 2.8), 2.0
+#: A ball's image is a disc (with its shadow, a bulge on it): its region, holes filled, covers
+#: at least this share of its convex hull.  A ball's shaded limb and its shadow alone, its lit
+#: side of the platter's colour, make a crescent that covers 0.5-0.75.
+MIN_SOLIDITY = 0.8
+#: A ball's region covers at least this share of its outline's inside: a highlight is a small
+#: hole in it (0.94-1.00 on the balls of the benchmark's scenes).  The thin ring of a label's
+#: edge, split from the label by colour, covers less than a tenth of the label; a steel ball
+#: on a light grey platter, its lit side of the platter's grey, leaves its shaded limb as a
+#: ring that covers 0.58 (a ball of nearly the platter's colour, which the guide rules out).
+MIN_FILL = 0.8
 #: A seed's colour is the median of the (2 ``SEED_PATCH`` + 1) px square about it.
 SEED_PATCH = 2
 
@@ -118,8 +133,8 @@ def _split(lab_img, region, clusters: int = 3) -> list[NDArray[np.uint8]]:
 
 def _shape(region: NDArray[np.uint8]) -> tuple[float, float, float]:
     """Axis ratio of a region, from its second moments, its solidity (the share of its
-    convex hull it covers, its holes filled: `turntable.video.find.MIN_SOLIDITY`) and the
-    share of its outline's inside it covers (`turntable.video.find.MIN_FILL`)."""
+    convex hull it covers, its holes filled: `MIN_SOLIDITY`) and the
+    share of its outline's inside it covers (`MIN_FILL`)."""
     m = cv2.moments(region, binaryImage=True)
     if m["m00"] < 3:
         return 1.0, 1.0, 1.0
@@ -164,3 +179,19 @@ def _seeded(lab_img, origin, platter: Platter, at, reach: float) -> Candidate | 
         contrast,
         *_shape(region),
     )
+
+
+def _ball_shaped(c: Candidate) -> bool:
+    """Round and whole as a ball's image is (`MAX_ELONGATION`, `MIN_SOLIDITY`, `MIN_FILL`)."""
+    return c.elongation < MAX_ELONGATION and c.solidity >= MIN_SOLIDITY and c.fill >= MIN_FILL
+
+
+def _area_at(pose: Pose, uv: tuple[float, float], ball_radius: float) -> float:
+    """Area (px^2) of the image of a ball of radius R seen at ``uv``."""
+    return math.pi * float(camera.image_radius(pose, [uv], ball_radius)[0]) ** 2
+
+
+def _a_ball(c: Candidate, pose: Pose, ball_radius: float) -> bool:
+    """Of a ball's area where it lies (`AREA_RANGE`) and of its shape (`_ball_shaped`)."""
+    area = c.area / _area_at(pose, (c.u, c.v), ball_radius)
+    return AREA_RANGE[0] < area < AREA_RANGE[1] and _ball_shaped(c)

@@ -575,6 +575,64 @@ def test_a_red_ball_by_a_salmon_label_with_its_shadow_on_it_is_told_from_it_by_c
     assert np.hypot(got.u - centroid[0], got.v - centroid[1]) < 0.02 * r_px
 
 
+def _seeded_ball(rgb: np.ndarray, seed):
+    """The candidate a seed on the ball (`turntable.video.find._at_seed`) takes on the picture
+    ``rgb`` (320 x 240) of a platter of grey (150, 150, 155), its rim 115 px about the middle,
+    seen from 0.4 m straight above: a ball's image is 20 px in radius."""
+    from turntable.video import camera, find
+    from turntable.video.decode import Picture, yuv420
+    from turntable.video.platter import Ellipse, Platter
+
+    h, w = rgb.shape[:2]
+    frame = yuv420(rgb)
+    picture = Picture(frame[:h], frame[h : h + h // 4].reshape(h // 2, w // 2),
+                      frame[h + h // 4 :].reshape(h // 2, w // 2), False)  # fmt: skip
+    pose = camera.Pose(1000.0, 0.0, 0.0, (0.0, 0.0), 0.4, (w, h))
+    r = 20.0 * 0.4 / (1000.0 + 20.0)  # the ball whose image is 20 px in radius
+    assert abs(camera.image_radius(pose, [seed], r)[0] - 20.0) < 0.1
+    rim = Ellipse((w / 2, h / 2), 115.0, 115.0, 0.0)
+    platter = Platter(rim, _lab(np.array([[[150, 150, 155]]], np.uint8))[0, 0].astype(float),
+                      np.array([20.0, 0.0, 0.0]))  # fmt: skip
+    look, lab0 = find._look(picture, platter, pose, r)
+    paths = [find._Path(c, 0.0) for c in find._first_candidates(look, lab0)]
+    return find._at_seed("--ball-at", seed, look, lab0, pose, r, paths)
+
+
+def _discs(*discs) -> np.ndarray:
+    """The grey platter of `_seeded_ball` with discs (centre u, v, radius px, RGB) on it."""
+    rgb = np.zeros((240, 320, 3), np.uint8)
+    rgb[:] = (150, 150, 155)
+    yy, xx = np.mgrid[:240, :320]
+    for u, v, radius, colour in discs:
+        rgb[np.hypot(xx - u, yy - v) < radius] = colour
+    return rgb
+
+
+def test_a_seed_on_a_red_ball_by_a_salmon_label_takes_the_ball_not_the_label() -> None:
+    """A red disc (RGB 200, 30, 30), a ball's image 20 px in radius, overlapping a salmon disc
+    (225, 108, 89) of 45 px on a grey platter (the ray caster's S11): on the line from the grey
+    to the seed's red the salmon lies at a share of 0.68, and the pixels nearer the red than
+    the grey were one region with it, about 6 times a ball's area (S11 seeded on the ball was
+    refused: its image 250 px across, a ball's 79).  The seeded ball is the red disc, the
+    unseeded search's candidate there: its area within 15 %, its centre within 1 px."""
+    rgb = _discs((100, 120, 45, (225, 108, 89)), (162, 120, 20, (200, 30, 30)))
+    got = _seeded_ball(rgb, (165.0, 117.0))  # on the ball, off its centre
+    assert abs(got.area / (math.pi * 20.0**2) - 1) < 0.15
+    assert np.hypot(got.u - 162.0, got.v - 120.0) < 1.0
+
+
+def test_a_seed_on_the_white_cap_of_a_black_ball_takes_the_whole_ball() -> None:
+    """A black disc, a ball's image 20 px in radius, a white disc of 8 px (a cap) at its centre
+    (the ray caster's S14, seeded at the ball's centre: the region at the seed was the cap, a
+    sixth of the ball's area, and the track, the cap's, was refused as jumping).  The seeded
+    ball is the unseeded search's candidate there, the black disc with its cap: its area within
+    15 %, its centre within 1 px."""
+    rgb = _discs((162, 120, 20, (20, 20, 20)), (162, 120, 8, (245, 245, 245)))
+    got = _seeded_ball(rgb, (162.0, 120.0))
+    assert abs(got.area / (math.pi * 20.0**2) - 1) < 0.15
+    assert np.hypot(got.u - 162.0, got.v - 120.0) < 1.0
+
+
 def test_a_ball_of_two_colours_is_followed_by_both():
     """A checkered ball, red and blue squares on a grey platter, its colour taken as the red
     (as the search takes the more distinct half's): by the red alone its blob is two of the

@@ -575,10 +575,11 @@ def test_a_red_ball_by_a_salmon_label_with_its_shadow_on_it_is_told_from_it_by_c
     assert np.hypot(got.u - centroid[0], got.v - centroid[1]) < 0.02 * r_px
 
 
-def _seeded_ball(rgb: np.ndarray, seed):
+def _seeded_ball(rgb: np.ndarray, seed, unseeded: bool = True):
     """The candidate a seed on the ball (`turntable.video.find._at_seed`) takes on the picture
     ``rgb`` (320 x 240) of a platter of grey (150, 150, 155), its rim 115 px about the middle,
-    seen from 0.4 m straight above: a ball's image is 20 px in radius."""
+    seen from 0.4 m straight above: a ball's image is 20 px in radius; with the unseeded
+    search's candidates (``unseeded``) or without."""
     from turntable.video import camera, find
     from turntable.video.decode import Picture, yuv420
     from turntable.video.platter import Ellipse, Platter
@@ -594,7 +595,7 @@ def _seeded_ball(rgb: np.ndarray, seed):
     platter = Platter(rim, _lab(np.array([[[150, 150, 155]]], np.uint8))[0, 0].astype(float),
                       np.array([20.0, 0.0, 0.0]))  # fmt: skip
     look, lab0 = find._look(picture, platter, pose, r)
-    paths = [find._Path(c, 0.0) for c in find._first_candidates(look, lab0)]
+    paths = [find._Path(c, 0.0) for c in find._first_candidates(look, lab0)] if unseeded else []
     return find._at_seed("--ball-at", seed, look, lab0, pose, r, paths)
 
 
@@ -608,15 +609,17 @@ def _discs(*discs) -> np.ndarray:
     return rgb
 
 
-def test_a_seed_on_a_red_ball_by_a_salmon_label_takes_the_ball_not_the_label() -> None:
+@pytest.mark.parametrize("unseeded", [True, False], ids=["as-unseeded", "its-part"])
+def test_a_seed_on_a_red_ball_by_a_salmon_label_takes_the_ball_not_the_label(unseeded) -> None:
     """A red disc (RGB 200, 30, 30), a ball's image 20 px in radius, overlapping a salmon disc
     (225, 108, 89) of 45 px on a grey platter (the ray caster's S11): on the line from the grey
     to the seed's red the salmon lies at a share of 0.68, and the pixels nearer the red than
     the grey were one region with it, about 6 times a ball's area (S11 seeded on the ball was
-    refused: its image 250 px across, a ball's 79).  The seeded ball is the red disc, the
-    unseeded search's candidate there: its area within 15 %, its centre within 1 px."""
+    refused: its image 250 px across, a ball's 79).  The seeded ball is the red disc: its area
+    within 15 %, its centre within 1 px; the unseeded search's candidate there (``unseeded``),
+    or, without the unseeded candidates, the region's part at the seed by colour."""
     rgb = _discs((100, 120, 45, (225, 108, 89)), (162, 120, 20, (200, 30, 30)))
-    got = _seeded_ball(rgb, (165.0, 117.0))  # on the ball, off its centre
+    got = _seeded_ball(rgb, (165.0, 117.0), unseeded)  # on the ball, off its centre
     assert abs(got.area / (math.pi * 20.0**2) - 1) < 0.15
     assert np.hypot(got.u - 162.0, got.v - 120.0) < 1.0
 

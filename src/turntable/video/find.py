@@ -277,9 +277,11 @@ def _at_seed(option, at, look: _Look, lab0, pose, ball_radius, paths) -> Candida
     seed whose region runs into something of a like colour, not of a ball's size and shape (a
     white ball touching a cream ring on a label: the ring's arc with it, its centroid 1.3 R
     off), is the candidate of the first frame of a ball's size and shape that covers the
-    seed nearest, split from it by colour, if one does (`_a_ball`)."""
-    reach = SEED_REACH * math.sqrt(_area_at(pose, at, ball_radius))
-    c = _seeded(lab0, look.origin, look.platter, at, reach)
+    seed nearest, split from it by colour, if one does (`_a_ball`); else its region's part at
+    the seed, by colour, where the region is larger than a ball's (`_seeded`)."""
+    area = _area_at(pose, at, ball_radius)
+    largest = AREA_RANGE[1] * area if option == "--ball-at" else math.inf
+    c = _seeded(lab0, look.origin, look.platter, at, SEED_REACH * math.sqrt(area), largest)
     if c is None:
         raise VideoError(
             f"{option} {at[0]:g},{at[1]:g}: nothing there differs from the platter; "

@@ -149,8 +149,13 @@ def _shape(region: NDArray[np.uint8]) -> tuple[float, float, float]:
     return math.sqrt(hi / max(lo, 1e-9)), min(solidity, 1.0), min(fill, 1.0)
 
 
-def _seeded(lab_img, origin, platter: Platter, at, reach: float) -> Candidate | None:
-    """The candidate at a seed: the pixels about it nearer its colour than the platter's."""
+def _seeded(
+    lab_img, origin, platter: Platter, at, reach: float, largest: float = math.inf
+) -> Candidate | None:
+    """The candidate at a seed: the pixels about it nearer its colour than the platter's.  A
+    region of more than ``largest`` px (a ball beside a label of a like colour, their pixels
+    one region) is split by colour as the unseeded search splits it (`_split`), and the part
+    at the seed taken."""
     u, v = round(at[0] - origin[0]), round(at[1] - origin[1])
     h, w = lab_img.shape[:2]
     if not (SEED_PATCH <= u < w - SEED_PATCH and SEED_PATCH <= v < h - SEED_PATCH):
@@ -163,21 +168,27 @@ def _seeded(lab_img, origin, platter: Platter, at, reach: float) -> Candidate | 
         return None
     box = window((u, v), reach, (h, w))
     share = Colour(colour, platter.colour).share(lab_img[box])
-    _, labels, stats, centroids = cv2.connectedComponentsWithStats(
+    _, labels, stats, _ = cv2.connectedComponentsWithStats(
         (share > THRESHOLD).astype(np.uint8), connectivity=8
     )
     i = labels[v - box[0].start, u - box[1].start]
     if i == 0:
         return None
     region = (labels == i).astype(np.uint8)
+    split = bool(stats[i][4] > largest)
+    if split:
+        at_seed = (v - box[0].start, u - box[1].start)
+        region = next((r for r in _split(lab_img[box], region) if r[at_seed]), region)
     pix = lab_img[box][region.astype(bool)]
+    vv, uu = np.nonzero(region)
     return Candidate(
-        float(centroids[i][0] + box[1].start + origin[0]),
-        float(centroids[i][1] + box[0].start + origin[1]),
-        float(stats[i][4]),
+        float(uu.mean() + box[1].start + origin[0]),
+        float(vv.mean() + box[0].start + origin[1]),
+        float(region.sum()),
         np.median(pix, axis=0).astype(float),
         contrast,
         *_shape(region),
+        split=split,
     )
 
 

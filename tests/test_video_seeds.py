@@ -190,3 +190,27 @@ def test_bad_frames_are_refused_before_a_frame_is_read(hidden_mark, options) -> 
     with pytest.raises(VideoError, match=r"past the end|is after"):
         track_video(path, RADIUS, PLATTER, progress=lambda *p: read.append(p[1]), **options)
     assert max(read, default=0) == 0
+
+
+@pytest.mark.parametrize("off_radii", [0.0, 2.0], ids=["on-the-ball", "two-radii-beside"])
+def test_a_later_seed_takes_only_the_ball_under_it(hidden_mark, off_radii, tmp_path, capsys):
+    """--ball-at 20:U,V on the ball is followed (the ball within 0.05 R); two of its image's
+    radii beside it, on the platter, it is refused with the frame named, not moved onto the
+    nearest blob of the ball's colour."""
+    path, truth = hidden_mark
+    u, v = map(float, ball_pixel(truth, 20).split(","))
+    xy = np.array([[truth.film.x[20], truth.film.y[20]]])
+    r_px = float(camera.image_radius(truth.pose, camera.project(truth.pose, xy, RADIUS), RADIUS)[0])
+    seed = f"20:{u + off_radii * r_px:.1f},{v:.1f}"
+    out = tmp_path / "film.csv"
+    seeds = ["--ball-at", seed, "--mark-at", f"35:{mark_pixel(truth, 35)}"]
+    res = run_here(capsys, "track", str(path), *TRACK, *seeds, "-o", str(out))
+    if off_radii:
+        assert res.returncode == 2
+        assert f"--ball-at {seed}: the ball is not found there" in res.stderr
+        return
+    assert res.returncode == 0, res.stderr
+    tracked = film.read_film(out)
+    x = np.interp(tracked.t, truth.film.t, truth.film.x)
+    y = np.interp(tracked.t, truth.film.t, truth.film.y)
+    assert np.sqrt(np.mean((tracked.x - x) ** 2 + (tracked.y - y) ** 2)) < 0.05 * RADIUS

@@ -356,12 +356,20 @@ def _ball_blob(
     half = min(half, reach)  # a ball lost for long: looked for about where it was
     box = window(tuple(near), half, picture.shape)
     radius = float(camera.image_radius(pose, near, ball_radius)[0])
-    got = _pick(
-        [b for b in blobs(picture, box, colour, allowed, outline=radius) if b.touches or not b.cut],
-        near,
-        ball.reference_area(found.ball.area),
-        BALL_AREA if ball.area else BALL_AREA_FIRST,
-    )
+    seen = [
+        b for b in blobs(picture, box, colour, allowed, outline=radius) if b.touches or not b.cut
+    ]
+    if ball.reseeded:  # a seed's ball: under the seed, of the first frame's ball's size there
+        first = float(camera.image_radius(pose, [(found.ball.u, found.ball.v)], ball_radius)[0])
+        seen = [b for b in seen if math.hypot(b.u - near[0], b.v - near[1]) < radius]
+        got = _pick(seen, near, found.ball.area * (radius / first) ** 2, BALL_AREA_FIRST)
+    else:
+        got = _pick(
+            seen,
+            near,
+            ball.reference_area(found.ball.area),
+            BALL_AREA if ball.area else BALL_AREA_FIRST,
+        )
     if got is None:
         got = merged_ball(picture, box, colour, near, radius)
     elif not got.outlined and got.area > ALONE_AREA * math.pi * radius**2:

@@ -192,11 +192,13 @@ def test_bad_frames_are_refused_before_a_frame_is_read(hidden_mark, options) -> 
     assert max(read, default=0) == 0
 
 
-@pytest.mark.parametrize("off_radii", [0.0, 2.0], ids=["on-the-ball", "two-radii-beside"])
+@pytest.mark.parametrize(
+    "off_radii", [0.0, 0.9, 2.5], ids=["on-the-ball", "on-its-edge", "beside-it"]
+)
 def test_a_later_seed_takes_only_the_ball_under_it(hidden_mark, off_radii, tmp_path, capsys):
-    """--ball-at 20:U,V on the ball is followed (the ball within 0.05 R); two of its image's
-    radii beside it, on the platter, it is refused with the frame named, not moved onto the
-    nearest blob of the ball's colour."""
+    """--ball-at 20:U,V on the ball, at its centre or on its edge, is followed (the ball
+    within 0.05 R); 2.5 of its image's radii beside it, on the platter, it is refused with the
+    frame named, not moved onto the nearest blob of the ball's colour."""
     path, truth = hidden_mark
     u, v = map(float, ball_pixel(truth, 20).split(","))
     xy = np.array([[truth.film.x[20], truth.film.y[20]]])
@@ -205,7 +207,7 @@ def test_a_later_seed_takes_only_the_ball_under_it(hidden_mark, off_radii, tmp_p
     out = tmp_path / "film.csv"
     seeds = ["--ball-at", seed, "--mark-at", f"35:{mark_pixel(truth, 35)}"]
     res = run_here(capsys, "track", str(path), *TRACK, *seeds, "-o", str(out))
-    if off_radii:
+    if off_radii > 1:
         assert res.returncode == 2
         assert f"--ball-at {seed}: the ball is not found there" in res.stderr
         return

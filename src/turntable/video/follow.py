@@ -35,6 +35,9 @@ RIM_FRAMES, RIM_EVERY = 12, 30
 #: area on the first frame, until it is found (``BALL_AREA_FIRST``: the probe's blobs are
 #: cut at another threshold).
 BALL_AREA, BALL_AREA_FIRST = (0.5, 1.7), (0.4, 2.5)
+#: A seed after the first frame takes a blob whose centre is within this many radii of the
+#: ball's image: a seed on its edge, the blob's centre moved by a shadow by half a radius.
+SEED_ON_BALL = 1.5
 #: The ball's window reaches ``BALL_WINDOW`` of its radii and ``WINDOW_PX`` px about where it
 #: is predicted, and its step and 2 radii more for each frame it is not found.
 BALL_WINDOW, WINDOW_PX = 2.5, 4.0
@@ -361,7 +364,7 @@ def _ball_blob(
     ]
     if ball.reseeded:  # a seed's ball: under the seed, of the first frame's ball's size there
         first = float(camera.image_radius(pose, [(found.ball.u, found.ball.v)], ball_radius)[0])
-        seen = [b for b in seen if math.hypot(b.u - near[0], b.v - near[1]) < radius]
+        seen = [b for b in seen if math.hypot(b.u - near[0], b.v - near[1]) < SEED_ON_BALL * radius]
         got = _pick(seen, near, found.ball.area * (radius / first) ** 2, BALL_AREA_FIRST)
     else:
         got = _pick(

@@ -22,6 +22,7 @@ from turntable.video import chroma, hue, ring
 from turntable.video import limb as limb_module
 from turntable.video.colours import OFF_LINE, Colour, Colours
 from turntable.video.decode import Picture, lab
+from turntable.video.rays import along_rays
 from turntable.video.robust import circle_centre, inliers
 
 try:
@@ -363,10 +364,7 @@ def _profiles(share, start, radius: float, rays: int):
     """The radii sampled (px), the rays' angles and the share along each ray (rays, radii)."""
     r = np.arange(RAY_FROM * radius, RAY_TO * radius + 3.0, RAY_STEP)
     a = np.linspace(0.0, 2 * math.pi, rays, endpoint=False)
-    pu = (start[0] + np.cos(a)[:, None] * r).astype(np.float32)
-    pv = (start[1] + np.sin(a)[:, None] * r).astype(np.float32)
-    prof = cv2.remap(share, pu, pv, cv2.INTER_LINEAR, borderMode=cv2.BORDER_REPLICATE)
-    return r, a, prof
+    return r, a, along_rays(share, start, a, r)
 
 
 def _first_fall(f: list[float], p: list[float], starts: list[int]) -> tuple[int, int, int] | None:

@@ -17,6 +17,8 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
+from turntable.video.rays import along_rays
+
 try:
     import cv2
 except ImportError:  # without the extra [video]
@@ -42,10 +44,7 @@ def on_label(share: NDArray[np.float32], start, radius: float, rays: int, thresh
     """Which of ``rays`` rays from ``start`` end on the label: their share at `BEYOND` radii
     above ``threshold``."""
     angles = np.linspace(0.0, 2 * np.pi, rays, endpoint=False)
-    at = radius * np.array(BEYOND, np.float32)
-    pu = (start[0] + np.cos(angles)[:, None] * at).astype(np.float32)
-    pv = (start[1] + np.sin(angles)[:, None] * at).astype(np.float32)
-    seen = cv2.remap(share, pu, pv, cv2.INTER_LINEAR, borderMode=cv2.BORDER_REPLICATE)
+    seen = along_rays(share, start, angles, radius * np.array(BEYOND, np.float32))
     return np.median(seen, axis=1) > threshold
 
 

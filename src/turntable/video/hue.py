@@ -16,10 +16,7 @@ import math
 import numpy as np
 from numpy.typing import NDArray
 
-try:
-    import cv2
-except ImportError:  # without the extra [video]
-    cv2 = None
+from turntable.video.rays import along_rays
 
 __all__ = [
     "BORDER_CONTRAST",
@@ -43,13 +40,6 @@ OTHER_PX, OTHER_CONTRAST, OTHER_RAYS = (1.5, 2.25, 3.0), 0.5, 4
 #: shaded edge).  A shadow as dark as the ball, or the ball beyond a shadow's circle, differs
 #: less.
 BORDER_CONTRAST = 10.0
-
-
-def _sample(lab_img: NDArray, start, angles: NDArray, at: NDArray) -> NDArray:
-    """CIELAB colours at distances ``at`` (px) from ``start`` along rays at ``angles``."""
-    pu = (start[0] + np.cos(angles)[:, None] * at).astype(np.float32)
-    pv = (start[1] + np.sin(angles)[:, None] * at).astype(np.float32)
-    return cv2.remap(lab_img, pu, pv, cv2.INTER_LINEAR, borderMode=cv2.BORDER_REPLICATE)
 
 
 def other_hue(lab_img: NDArray, lines, start, radius: float, rays: int, off_line: float):
@@ -79,7 +69,7 @@ def other_hue(lab_img: NDArray, lines, start, radius: float, rays: int, off_line
     """
     angles = np.linspace(0.0, 2 * math.pi, rays, endpoint=False)
     at = radius + np.array([-OTHER_PX[1], *OTHER_PX], np.float32)  # inside, then outside
-    seen = _sample(lab_img, start, angles, at)
+    seen = along_rays(lab_img, start, angles, at)
     outside = seen[:, 1:]  # the median of three: their sum less the largest and the least
     inside, bg = seen[:, 0], outside.sum(1) - outside.max(1) - outside.min(1)
     other = np.ones(rays, bool)
@@ -101,7 +91,7 @@ def other_hue(lab_img: NDArray, lines, start, radius: float, rays: int, off_line
 def mix_profiles(lab_img: NDArray, start, r: NDArray, angles: NDArray, bg, step) -> NDArray:
     """The share of ``step`` from ``bg`` that the colours at ``r`` (px) along each ray at
     ``angles`` from ``start`` have come (0 at the background, 1 at the ball's colour)."""
-    along = _sample(lab_img, start, angles, r)
+    along = along_rays(lab_img, start, angles, r)
     return (
         np.einsum("krc,kc->kr", along - bg[:, None], step)
         / np.einsum("kc,kc->k", step, step)[:, None]
@@ -133,7 +123,7 @@ def borders_another_colour(lab_img: NDArray, targets, centre, radius: float, ray
         One bool a ray.
     """
     angles = np.linspace(0.0, 2 * math.pi, rays, endpoint=False)
-    seen = _sample(lab_img, centre, angles, radius + np.array([-width, width], np.float32))
+    seen = along_rays(lab_img, centre, angles, radius + np.array([-width, width], np.float32))
     inside, outside = seen[:, 0], seen[:, 1]
     other = np.linalg.norm(outside - inside, axis=-1) >= BORDER_CONTRAST
     for target in targets:

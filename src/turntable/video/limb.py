@@ -14,10 +14,7 @@ import math
 import numpy as np
 from numpy.typing import NDArray
 
-try:
-    import cv2
-except ImportError:  # without the extra [video]
-    cv2 = None
+from turntable.video.rays import along_rays
 
 #: A ray crosses the ball's shaded limb where the share just inside the circle is below minus
 #: this: darker than the platter by a tenth of the ball's step from it (a white ball's shaded
@@ -48,10 +45,7 @@ def across(share: NDArray[np.float32], centre: NDArray, radius: float, rays: int
         Shape (rays, 2): the share inside, then outside.
     """
     a = np.linspace(0.0, 2 * math.pi, rays, endpoint=False)
-    r = radius + np.array([-width, width])
-    pu = (centre[0] + np.cos(a)[:, None] * r).astype(np.float32)
-    pv = (centre[1] + np.sin(a)[:, None] * r).astype(np.float32)
-    return cv2.remap(share, pu, pv, cv2.INTER_LINEAR, borderMode=cv2.BORDER_REPLICATE)
+    return along_rays(share, centre, a, radius + np.array([-width, width]))
 
 
 def confirmed(profile: NDArray[np.float32], step: float, limb: bool) -> NDArray[np.bool_]:

@@ -19,6 +19,7 @@ import math
 import numpy as np
 from numpy.typing import NDArray
 
+from turntable.video.rays import along_rays
 from turntable.video.robust import circle_centre, inliers
 
 try:
@@ -75,9 +76,7 @@ def edge_points(share: NDArray[np.float32], start: NDArray, radius: float,
     """
     r = np.arange(FROM * radius, TO * radius + 3.0, STEP)
     a = np.linspace(0.0, 2 * math.pi, rays, endpoint=False)
-    pu = (start[0] + np.cos(a)[:, None] * r).astype(np.float32)
-    pv = (start[1] + np.sin(a)[:, None] * r).astype(np.float32)
-    prof = cv2.remap(share, pu, pv, cv2.INTER_LINEAR, borderMode=cv2.BORDER_REPLICATE)
+    prof = along_rays(share, start, a, r)
     index, px = np.arange(r.size), int(1 / STEP)
     pts, ringed = [], 0
     for k, p in enumerate(prof):

@@ -44,11 +44,9 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-import argparse
 import dataclasses
 import json
 import subprocess
-import tempfile
 import time
 from typing import Any
 
@@ -56,7 +54,7 @@ import cv2
 import numpy as np
 
 from raycast_scene import SCENES, Camera, Scene, frames, render, seeds, simulate
-from results_file import ROOT, merge_results
+from results_file import run_cases
 from turntable._blas import one_blas_thread
 from turntable.video.uncertainty import TRACKER_ERROR
 from video import ON_LABEL_S, SAME_COLOUR, WRONG_OMEGA, WRONG_RMS, WRONG_Z
@@ -328,16 +326,7 @@ def run(names: list[str], folder: Path) -> dict[str, Any]:
 
 def main() -> None:
     """Run the scenes asked for and merge the result into ``results/benchmarks.json``."""
-    parser = argparse.ArgumentParser(description=__doc__.partition("\n\n")[0])
-    parser.add_argument("--cases", nargs="+", choices=list(SCENES), default=list(SCENES))
-    parser.add_argument("--keep", type=Path, help="render into this folder, reuse its videos")
-    args = parser.parse_args()
-    with tempfile.TemporaryDirectory(prefix="turntable-raycast-") as tmp:
-        folder = args.keep or Path(tmp)
-        folder.mkdir(parents=True, exist_ok=True)
-        res = run(args.cases, folder)
-    res["command"] = "python " + " ".join(["benchmarks/raycast.py", *sys.argv[1:]])
-    merge_results(ROOT / "results/benchmarks.json", {"raycast": res})
+    res = run_cases("raycast.py", __doc__, list(SCENES), run, "raycast")
     wrong = ": " + ", ".join(res["wrong_cases"]) if res["wrong"] else ""
     print(f"\n{res['scenes']} SYNTHETIC scenes: {res['right']} right, {res['refused']} refused, "
           f"{res['wrong']} wrong{wrong}; within the filming guide {res['within_guide']}, of "

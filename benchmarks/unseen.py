@@ -31,13 +31,11 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-import argparse
-import tempfile
 from typing import Any
 
 import numpy as np
 
-from results_file import ROOT, merge_results
+from results_file import run_cases
 from turntable._blas import one_blas_thread
 from video import COLOURS, GREYS, draw, measure, reliable_level, render, rgba
 
@@ -181,16 +179,7 @@ def run(names: list[str], folder: Path) -> dict[str, Any]:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.partition("\n\n")[0])
-    parser.add_argument("--cases", nargs="+", choices=list(CASES), default=list(CASES))
-    parser.add_argument("--keep", type=Path, help="render into this folder, reuse its videos")
-    args = parser.parse_args()
-    with tempfile.TemporaryDirectory(prefix="turntable-unseen-") as tmp:
-        folder = args.keep or Path(tmp)
-        folder.mkdir(parents=True, exist_ok=True)
-        res = run(args.cases, folder)
-    res["command"] = "python " + " ".join(["benchmarks/unseen.py", *sys.argv[1:]])
-    merge_results(ROOT / "results/benchmarks.json", {"unseen": res})
+    res = run_cases("unseen.py", __doc__, list(CASES), run, "unseen")
     wrong = ": " + ", ".join(res["wrong_cases"]) if res["wrong"] else ""
     print(f"\n{res['cases']} cases: {res['right']} right, {res['refused']} refused, "
           f"{res['wrong']} wrong{wrong}; within the filming guide {res['within_guide']}, of "

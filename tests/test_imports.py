@@ -101,23 +101,29 @@ print(json.dumps(out))
 """
 
 
+def _loaded(code: str, entries: list[str], **kw) -> dict[str, list[str]]:
+    """What ``code`` (`_LOADED`, `_SCRIPT_LOADED`) prints for ``entries``, in a fresh Python."""
+    argv = [sys.executable, "-c", code, json.dumps(entries)]
+    return json.loads(subprocess.run(argv, capture_output=True, text=True, check=True, **kw).stdout)
+
+
+def _missing(loaded: dict[str, list[str]], code) -> dict[str, list[str]]:
+    """For each entry, the package's modules it loaded that ``code(entry)`` leaves out."""
+    files = {path: name for name, path in module_names().items()}
+    out = {}
+    for entry, names in loaded.items():
+        static = {files[p] for p in code(entry) if p in files}
+        if set(names) - static:
+            out[entry] = sorted(set(names) - static)
+    return out
+
+
 def test_code_of_a_module_holds_every_module_its_import_loads() -> None:
     """The second route: what Python loads, against what `code_of` reads from the source."""
     names = sorted(n for n in module_names() if not n.endswith("__main__"))
-    out = subprocess.run(
-        [sys.executable, "-c", _LOADED, json.dumps(names)],
-        capture_output=True,
-        text=True,
-        check=True,
-    )
-    files = {path: name for name, path in module_names().items()}
-    missing = {}
-    for name, loaded in json.loads(out.stdout).items():
-        static = {files[p] for p in code_of(name) if p in files}
-        if set(loaded) - static:
-            missing[name] = sorted(set(loaded) - static)
+    loaded = _loaded(_LOADED, names)
     assert len(names) > 50
-    assert missing == {}
+    assert _missing(loaded, code_of) == {}
 
 
 # Each script's imports alone, its folder first on sys.path: the package's modules loaded.
@@ -151,22 +157,10 @@ def test_code_of_a_script_holds_every_module_its_imports_load() -> None:
         for p in (root / folder).glob("*.py")
         if not p.name.startswith("_")
     )
-    out = subprocess.run(
-        [sys.executable, "-c", _SCRIPT_LOADED, json.dumps(scripts)],
-        capture_output=True,
-        text=True,
-        check=True,
-        cwd=root,
-    )
-    files = {path: name for name, path in module_names().items()}
-    missing = {}
-    for script, loaded in json.loads(out.stdout).items():
-        static = {files[p] for p in code_of(Path(script)) if p in files}
-        if set(loaded) - static:
-            missing[Path(script).name] = sorted(set(loaded) - static)
+    loaded = _loaded(_SCRIPT_LOADED, scripts, cwd=root)
     assert len(scripts) > 10
-    assert "turntable._atomic" in json.loads(out.stdout)[str(root / "scripts/fig1_schematic.py")]
-    assert missing == {}
+    assert "turntable._atomic" in loaded[str(root / "scripts/fig1_schematic.py")]
+    assert _missing(loaded, lambda script: code_of(Path(script))) == {}
 
 
 def test_code_of_follows_scripts_lazy_imports_and_data(tmp_path: Path) -> None:
